@@ -1,0 +1,80 @@
+#pragma once
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <amfrac/assembly/loads.h>
+#include <amfrac/dofs/tied_copy_dofs.h>
+#include <amfrac/material/ply_table.h>
+
+namespace amfrac
+{
+  /**
+   * Bulk (ply) small-strain elasticity on the tied-copy layer: stiffness,
+   * load vector and the unconstrained residual K u - f (for reactions and
+   * the energy balance), all in the reduced numbering.
+   */
+  template <int dim>
+  class ElasticAssembler
+  {
+  public:
+    using Matrix = TrilinosWrappers::SparseMatrix;
+    using Vector = TrilinosWrappers::MPI::Vector;
+
+    ElasticAssembler(const TiedCopyDoFs<dim>               &dofs,
+                     const std::vector<PlyProperties<dim>> &plies);
+
+    /** Size @p matrix for the cell couplings under @p constraints. */
+    void
+    reinit_matrix(const AffineConstraints<double> &constraints,
+                  Matrix                          &matrix) const;
+
+    /** The condensed stiffness matrix. */
+    void
+    assemble_matrix(const AffineConstraints<double> &constraints,
+                    Matrix                          &matrix) const;
+
+    /** The condensed load vector at time @p t, including the effect of
+     * inhomogeneous constraints (the cell stiffness is computed only on
+     * cells that have such constraints). */
+    void
+    assemble_rhs(const Loads<dim>                &loads,
+                 const double                     t,
+                 const AffineConstraints<double> &constraints,
+                 Vector                          &rhs) const;
+
+    struct Energies
+    {
+      double strain_energy = 0;
+      double load_work     = 0;
+    };
+
+    /** residual = K u - f without constraints (its entries on supported
+     * dofs are the reactions); returns strain energy and load work. */
+    Energies
+    compute_residual(const Loads<dim> &loads,
+                     const double      t,
+                     const Vector     &relevant_solution,
+                     Vector           &residual) const;
+
+  private:
+    const TiedCopyDoFs<dim>               &dofs;
+    const std::vector<PlyProperties<dim>> &plies;
+    const unsigned int                     quadrature_degree;
+
+    class Scratch;
+
+    void
+    cell_matrix(Scratch &scratch, const unsigned int ply, FullMatrix<double> &K)
+      const;
+
+    void
+    cell_load(Scratch                                            &scratch,
+              const typename TiedCopyDoFs<dim>::CellIterator     &cell,
+              const Loads<dim>                                   &loads,
+              const double                                        t,
+              dealii::Vector<double>                             &f) const;
+  };
+} // namespace amfrac

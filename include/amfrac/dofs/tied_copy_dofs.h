@@ -1,0 +1,162 @@
+#pragma once
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/lac/vector.h>
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace amfrac
+{
+  using namespace dealii;
+
+  /**
+   * The tied-copy DoF layer (doc/design.md). Every cell owns its own copy
+   * of each of its nodes (a discontinuous FE_DGQ layout on an intact
+   * triangulation); a tie map decides which copies are one unknown. Copies
+   * across an intact face are tied; copies across a released face (a
+   * cohesive interface or a crack) are not, so releasing a face duplicates
+   * exactly the nodes that the released faces separate.
+   *
+   * All linear algebra lives on the *reduced* numbering, one index per
+   * group of tied copies, so matrices and solvers cost what a continuous
+   * FE_Q code costs. Reduced indices are numbered node by node (the dim
+   * components of a node are consecutive, as algebraic multigrid wants),
+   * and each MPI rank owns a contiguous block: a group belongs to the
+   * lowest rank owning one of its copies.
+   */
+  template <int dim>
+  class TiedCopyDoFs
+  {
+  public:
+    using CellIterator = typename DoFHandler<dim>::active_cell_iterator;
+    /** Says whether the face @p face of @p cell is released (untied). */
+    using FaceFilter =
+      std::function<bool(const CellIterator &cell, const unsigned int face)>;
+
+    TiedCopyDoFs(const Triangulation<dim> &triangulation,
+                 const unsigned int        degree);
+
+    /** Build the copies and the tie map; faces for which @p released
+     * returns true stay untied. Throws for meshes with hanging nodes. */
+    void
+    distribute(const FaceFilter &released = FaceFilter());
+
+    /** The DoFHandler of the copy space (for FEValues and DataOut). */
+    const DoFHandler<dim> &
+    copy_handler() const
+    {
+      return dof_handler;
+    }
+
+    const FiniteElement<dim> &
+    get_fe() const
+    {
+      return *fe;
+    }
+
+    /** Number of reduced unknowns. */
+    types::global_dof_index
+    n_dofs() const
+    {
+      return support_points.size();
+    }
+
+    types::global_dof_index
+    n_copies() const
+    {
+      return copy_to_reduced.size();
+    }
+
+    const IndexSet &
+    locally_owned_dofs() const
+    {
+      return owned_dofs;
+    }
+
+    /** Reduced indices on locally owned cells, plus the owned ones. */
+    const IndexSet &
+    locally_relevant_dofs() const
+    {
+      return relevant_dofs;
+    }
+
+    /** Reduced indices of the dofs of @p cell, in the cell's local order. */
+    void
+    get_dof_indices(const CellIterator                   &cell,
+                    std::vector<types::global_dof_index> &indices) const;
+
+    const Point<dim> &
+    support_point(const types::global_dof_index i) const
+    {
+      return support_points[i];
+    }
+
+    unsigned int
+    component(const types::global_dof_index i) const
+    {
+      return components[i];
+    }
+
+    /** Local dofs of a cell whose support points lie on face @p face. */
+    const std::vector<unsigned int> &
+    dofs_on_face(const unsigned int face) const
+    {
+      return face_dofs[face];
+    }
+
+    /** Write the copy values of locally owned cells from a reduced vector
+     * that holds the locally relevant entries. */
+    template <typename VectorType>
+    void
+    expand(const VectorType &reduced, Vector<double> &copies) const;
+
+    /** Bytes held by the layer (copies, tie map, support points). */
+    std::size_t
+    memory_consumption() const;
+
+  private:
+    const Triangulation<dim>                &triangulation;
+    std::unique_ptr<FESystem<dim>>           fe;
+    DoFHandler<dim>                          dof_handler;
+    std::vector<std::vector<unsigned int>>   face_dofs;
+    std::vector<types::global_dof_index>     copy_to_reduced;
+    std::vector<Point<dim>>                  support_points;
+    std::vector<unsigned char>               components;
+    IndexSet                                 owned_dofs;
+    IndexSet                                 relevant_dofs;
+
+    /** Union-find over copies: tie the copies of two faces that share a
+     * support point and a component. */
+    void
+    tie_faces(const FaceFilter                           &released,
+              const std::vector<Point<dim>>              &copy_position,
+              std::vector<types::global_dof_index>       &parent) const;
+
+    void
+    number_groups(std::vector<types::global_dof_index> &parent,
+                  const std::vector<Point<dim>>        &copy_position);
+  };
+
+
+
+  template <int dim>
+  template <typename VectorType>
+  void
+  TiedCopyDoFs<dim>::expand(const VectorType &reduced,
+                            Vector<double>   &copies) const
+  {
+    copies.reinit(n_copies());
+    std::vector<types::global_dof_index> local(fe->n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(local);
+          for (const auto c : local)
+            copies[c] = reduced[copy_to_reduced[c]];
+        }
+  }
+} // namespace amfrac

@@ -1,0 +1,62 @@
+#pragma once
+
+#include <deal.II/grid/tria.h>
+
+#include <amfrac/geometry/stacking_sequence.h>
+#include <amfrac/material/orthotropic.h>
+#include <amfrac/parameters/parameters.h>
+
+#include <vector>
+
+namespace amfrac
+{
+  using namespace dealii;
+
+  /** The stacking of a laminate: its plies bottom-up and where they are. */
+  struct Laminate
+  {
+    std::vector<Ply>          plies;
+    std::vector<unsigned int> material_of_ply;
+    /** Thickness coordinates of the ply boundaries, bottom to top
+     * (n_plies + 1 values, the first is 0). */
+    std::vector<double> ply_boundaries;
+
+    Laminate(const parameters::Geometry  &geometry,
+             const parameters::Materials &materials);
+
+    unsigned int
+    n_plies() const
+    {
+      return plies.size();
+    }
+
+    double
+    thickness() const
+    {
+      return ply_boundaries.back();
+    }
+  };
+
+  /**
+   * Mesh the laminate box [0,L] x [0,W] x [0,t] (3D) or [0,L] x [0,t]
+   * (2D plane strain, y is the thickness axis) with structured hexahedra
+   * (quadrilaterals): ply boundaries are mesh planes, the material id of
+   * every cell is its ply index, boundary ids 0..2*dim-1 are the faces
+   * x-, x+, y-, y+, (z-, z+).
+   */
+  template <int dim>
+  void
+  make_laminate_mesh(const parameters::Geometry &geometry,
+                     const Laminate             &laminate,
+                     Triangulation<dim>         &triangulation);
+
+  /** Ply-boundary face test: true if the face between @p cell and its
+   * neighbour across @p face is a ply interface. */
+  template <typename CellIterator>
+  bool
+  is_ply_interface(const CellIterator &cell, const unsigned int face)
+  {
+    return !cell->at_boundary(face) &&
+           cell->neighbor(face)->material_id() != cell->material_id();
+  }
+} // namespace amfrac

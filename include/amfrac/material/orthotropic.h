@@ -1,0 +1,89 @@
+#pragma once
+
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <string>
+
+namespace amfrac
+{
+  using namespace dealii;
+
+  /** Engineering constants of an orthotropic ply in its material axes
+   * (1 = fibre, 2 = in-plane transverse, 3 = through the thickness).
+   * Units: MPa for moduli, t/mm^3 for the density (N, mm, s system). */
+  struct ElasticConstants
+  {
+    double E1 = 0, E2 = 0, E3 = 0;
+    double G12 = 0, G13 = 0, G23 = 0;
+    double nu12 = 0, nu13 = 0, nu23 = 0;
+    double density = 0;
+  };
+
+  /** Strengths (positive magnitudes, MPa) for the Hoffman criterion. */
+  struct Strengths
+  {
+    double Xt = 0, Xc = 0, Yt = 0, Yc = 0, Zt = 0, Zc = 0;
+    double S12 = 0, S13 = 0, S23 = 0;
+  };
+
+  /** A named orthotropic material. */
+  struct OrthotropicMaterial
+  {
+    std::string      name;
+    ElasticConstants elastic;
+    Strengths        strengths;
+  };
+
+  /**
+   * The stiffness tensor in material axes. Throws std::invalid_argument
+   * (naming the offending constant) unless all moduli are positive and the
+   * compliance matrix is positive definite.
+   */
+  SymmetricTensor<4, 3>
+  stiffness_in_material_axes(const ElasticConstants &constants);
+
+  /** Rotation whose columns are the material axes in laminate axes, for a
+   * ply at @p angle_degrees about the laminate normal (axis 3 = z). */
+  Tensor<2, 3>
+  ply_rotation(const double angle_degrees);
+
+  /** C'_{ijkl} = R_ia R_jb R_kc R_ld C_abcd. */
+  SymmetricTensor<4, 3>
+  rotate(const SymmetricTensor<4, 3> &C, const Tensor<2, 3> &R);
+
+  /** Laminate-axes stress -> material-axes stress (R^T sigma R). */
+  SymmetricTensor<2, 3>
+  to_material_axes(const SymmetricTensor<2, 3> &stress, const Tensor<2, 3> &R);
+
+  /**
+   * The Hoffman (1967) failure index F of a material-axes stress; failure
+   * at F = 1. Reference: ../shared/reference/README.md section 4.
+   */
+  double
+  hoffman_index(const SymmetricTensor<2, 3> &stress_material_axes,
+                const Strengths             &strengths);
+
+  /**
+   * Restrict a 3D laminate-axes tensor to the plane-strain model, whose
+   * two axes are laminate x (0) and the thickness direction z (2); the
+   * laminate width direction y is the out-of-plane axis.
+   */
+  template <int dim>
+  SymmetricTensor<4, dim>
+  restrict_to_model(const SymmetricTensor<4, 3> &C);
+
+  /** Embed a model-dimension strain into 3D laminate axes (plane strain:
+   * zero strain components along the width direction). */
+  template <int dim>
+  SymmetricTensor<2, 3>
+  embed_in_3d(const SymmetricTensor<2, dim> &strain);
+
+  /** Axis of the 3D laminate frame that model axis @p d maps to. */
+  template <int dim>
+  constexpr unsigned int
+  laminate_axis(const unsigned int d)
+  {
+    return (dim == 3 || d == 0) ? d : 2;
+  }
+} // namespace amfrac

@@ -1,0 +1,34 @@
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace amfrac
+{
+  /**
+   * The one exception type for bad input. Its message always names the
+   * parameter (as "Section/Entry") or the file that caused it, so that
+   * main() can print a single clear line and exit with a non-zero code.
+   */
+  class InputError : public std::runtime_error
+  {
+  public:
+    InputError(const std::string &parameter, const std::string &message)
+      : std::runtime_error("parameter <" + parameter + ">: " + message)
+    {}
+
+    explicit InputError(const std::string &message)
+      : std::runtime_error(message)
+    {}
+  };
+
+  /** Throw an InputError for @p parameter unless @p condition holds. */
+  inline void
+  require(const bool         condition,
+          const std::string &parameter,
+          const std::string &message)
+  {
+    if (!condition)
+      throw InputError(parameter, message);
+  }
+} // namespace amfrac

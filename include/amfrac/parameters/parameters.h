@@ -1,0 +1,185 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <amfrac/material/orthotropic.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace amfrac
+{
+  namespace parameters
+  {
+    using namespace dealii;
+
+    /** `subsection Geometry`: the laminate box and its structured mesh. */
+    struct Geometry
+    {
+      std::string         stacking_sequence;
+      std::vector<double> ply_thickness;
+      double              total_thickness;
+      double              length;
+      double              width;
+      unsigned int        elements_along_length;
+      unsigned int        elements_along_width;
+      unsigned int        elements_per_ply;
+      unsigned int        global_refinements;
+      double              mesh_distortion;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /** `subsection Materials`: named orthotropic materials, given as
+     * lists with one value per name (or one value for all). */
+    struct Materials
+    {
+      std::vector<OrthotropicMaterial> materials;
+
+      /** Index of the material called @p name ("" is the first one). */
+      unsigned int
+      index_of(const std::string &name) const;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /** `subsection Discretization`. */
+    struct Discretization
+    {
+      unsigned int degree;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /** One named face of the laminate box with its boundary condition. */
+    struct BoundaryFace
+    {
+      enum class Type
+      {
+        free,
+        displacement,
+        traction,
+        pressure
+      };
+      std::string              name;
+      Type                     type = Type::free;
+      std::array<bool, 3>      components{{true, true, true}};
+      std::vector<std::string> displacement;
+      std::vector<std::string> traction;
+      std::string              pressure;
+      std::string              where;
+    };
+
+    /** `subsection Boundary conditions` with one subsection per face
+     * (x-, x+, y-, y+, z-, z+; the thickness axis is z in 3D and y in 2D),
+     * and the body force. */
+    struct BoundaryConditions
+    {
+      std::vector<BoundaryFace> faces;
+      std::vector<std::string>  body_force;
+      std::string               constants;
+
+      static const std::array<const char *, 6> face_names;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm, const unsigned int dim);
+    };
+
+    /** `subsection Linear solver`. */
+    struct LinearSolver
+    {
+      enum class Type
+      {
+        direct,
+        cg_amg
+      };
+      Type         type;
+      std::string  direct_package;
+      double       tolerance;
+      unsigned int max_iterations;
+      unsigned int smoother_sweeps;
+      double       aggregation_threshold;
+      std::string  smoother_type;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /** `subsection Time`: load steps of a (quasi-)static run. */
+    struct Time
+    {
+      double       end_time;
+      unsigned int n_steps;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /** `subsection Output`. */
+    struct Output
+    {
+      std::string              directory;
+      std::string              base_name;
+      bool                     write_vtu;
+      bool                     write_xdmf;
+      unsigned int             every_n_steps;
+      std::vector<Point<3>>    points;
+      std::vector<std::string> point_names;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm, const unsigned int dim);
+    };
+
+    /** All parameters of a run. */
+    struct Parameters
+    {
+      unsigned int       dimension;
+      Geometry           geometry;
+      Materials          materials;
+      Discretization     discretization;
+      BoundaryConditions boundary_conditions;
+      LinearSolver       linear_solver;
+      Time               time;
+      Output             output;
+      std::string        source_file;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+
+      /** Declare, read @p filename, parse and validate. Throws InputError
+       * with the parameter (and the file and line where deal.II knows
+       * it). */
+      static Parameters
+      from_file(const std::string &filename);
+
+      /** The same from the text of a parameter file (for tests). */
+      static Parameters
+      from_string(const std::string &text);
+    };
+
+    /** Split "a; b; c" into trimmed expressions. */
+    std::vector<std::string>
+    split_expressions(const std::string &text);
+  } // namespace parameters
+} // namespace amfrac

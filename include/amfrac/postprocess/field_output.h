@@ -1,0 +1,73 @@
+#pragma once
+
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <amfrac/dofs/tied_copy_dofs.h>
+#include <amfrac/material/ply_table.h>
+#include <amfrac/parameters/parameters.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace amfrac
+{
+  /** Strain, stress in model and ply axes, and the Hoffman index, from
+   * the displacement gradient and the ply of each cell. */
+  template <int dim>
+  class StressPostprocessor : public DataPostprocessor<dim>
+  {
+  public:
+    explicit StressPostprocessor(const std::vector<PlyProperties<dim>> &plies);
+
+    void
+    evaluate_vector_field(
+      const DataPostprocessorInputs::Vector<dim> &inputs,
+      std::vector<dealii::Vector<double>>        &computed) const override;
+
+    std::vector<std::string>
+    get_names() const override;
+
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+    get_data_component_interpretation() const override;
+
+    UpdateFlags
+    get_needed_update_flags() const override;
+
+  private:
+    const std::vector<PlyProperties<dim>> &plies;
+  };
+
+
+
+  /**
+   * Field output: per step one VTU per rank with a PVTU record and a PVD
+   * time series, and/or one HDF5 file with an XDMF record. Every file is
+   * written under a temporary name and renamed.
+   */
+  template <int dim>
+  class FieldOutput
+  {
+  public:
+    FieldOutput(const parameters::Output              &parameters,
+                const TiedCopyDoFs<dim>               &dofs,
+                const std::vector<PlyProperties<dim>> &plies);
+
+    /** @p copy_values: the displacement on the copy layer (owned cells). */
+    void
+    write(const unsigned int step, const double time,
+          const dealii::Vector<double> &copy_values);
+
+  private:
+    const parameters::Output                        &parameters;
+    const TiedCopyDoFs<dim>                         &dofs;
+    StressPostprocessor<dim>                         postprocessor;
+    std::vector<std::pair<double, std::string>>      pvd_records;
+    std::vector<XDMFEntry>                           xdmf_entries;
+
+    std::string
+    path(const std::string &name) const;
+  };
+} // namespace amfrac

@@ -1,0 +1,36 @@
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace amfrac
+{
+  /**
+   * A CSV table of summary quantities, one row per step. Rank 0 rewrites
+   * the whole file atomically after each row, so the file on disk is
+   * always complete.
+   */
+  class History
+  {
+  public:
+    History(const std::string &filename, const bool is_writer);
+
+    /** Append a row of (column, value) pairs; the first row fixes the
+     * columns. */
+    void
+    add_row(const std::vector<std::pair<std::string, double>> &row);
+
+    const std::vector<std::vector<double>> &
+    rows() const
+    {
+      return values;
+    }
+
+  private:
+    const std::string                filename;
+    const bool                       is_writer;
+    std::vector<std::string>         columns;
+    std::vector<std::vector<double>> values;
+  };
+} // namespace amfrac

@@ -1,0 +1,46 @@
+#pragma once
+
+#include <deal.II/base/point.h>
+#include <deal.II/lac/vector.h>
+
+#include <amfrac/dofs/tied_copy_dofs.h>
+#include <amfrac/material/ply_table.h>
+
+#include <vector>
+
+namespace amfrac
+{
+  /** Displacement and stress (model axes) at fixed points. The cell around
+   * each point is found once; its owner evaluates and the values are
+   * summed over ranks, so every rank gets them. */
+  template <int dim>
+  class PointProbe
+  {
+  public:
+    /** Throws std::invalid_argument naming a point outside the mesh. */
+    PointProbe(const TiedCopyDoFs<dim>               &dofs,
+               const std::vector<PlyProperties<dim>> &plies,
+               const std::vector<Point<dim>>         &points);
+
+    struct Value
+    {
+      Tensor<1, dim>        displacement;
+      SymmetricTensor<2, 3> stress;
+    };
+
+    std::vector<Value>
+    evaluate(const dealii::Vector<double> &copy_values) const;
+
+    std::size_t
+    size() const
+    {
+      return cells.size();
+    }
+
+  private:
+    const TiedCopyDoFs<dim>                             &dofs;
+    const std::vector<PlyProperties<dim>>               &plies;
+    std::vector<typename TiedCopyDoFs<dim>::CellIterator> cells;
+    std::vector<Point<dim>>                             unit_points;
+  };
+} // namespace amfrac

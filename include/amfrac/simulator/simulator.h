@@ -1,0 +1,124 @@
+#pragma once
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/numerics/vector_tools_common.h>
+
+#include <amfrac/assembly/elastic_assembler.h>
+#include <amfrac/assembly/loads.h>
+#include <amfrac/dofs/tied_copy_dofs.h>
+#include <amfrac/geometry/laminate.h>
+#include <amfrac/material/ply_table.h>
+#include <amfrac/parameters/parameters.h>
+#include <amfrac/postprocess/field_output.h>
+#include <amfrac/postprocess/history.h>
+#include <amfrac/postprocess/point_probe.h>
+#include <amfrac/solvers/linear_solver.h>
+
+#include <array>
+#include <memory>
+
+namespace amfrac
+{
+  /** A displacement prescribed on the nodes of one boundary id. */
+  template <int dim>
+  struct PrescribedDisplacement
+  {
+    std::string                    name;
+    types::boundary_id             boundary_id;
+    std::shared_ptr<Function<dim>> value;
+    std::array<bool, dim>          components;
+    /** Optional: only nodes where this is nonzero (nullptr: all). */
+    std::shared_ptr<Function<dim>> where;
+  };
+
+  /**
+   * A static (load-stepped) run of a laminate: mesh, tied-copy DoF layer,
+   * bulk assembly, linear solve, output. Everything that the scene does not
+   * need is not built.
+   */
+  template <int dim>
+  class Simulator
+  {
+  public:
+    using Vector = TrilinosWrappers::MPI::Vector;
+
+    /** Builds the mesh and validates every input that depends on it;
+     * throws InputError before anything is written. */
+    Simulator(const parameters::Parameters &parameters, const MPI_Comm comm);
+
+    /** Replace the body force (e.g. a manufactured solution). */
+    void
+    set_body_force(const std::shared_ptr<Function<dim>> &force);
+
+    /** Replace all prescribed displacements. */
+    void
+    set_prescribed_displacements(
+      const std::vector<PrescribedDisplacement<dim>> &conditions);
+
+    /** Solve every load step and write the output. */
+    void
+    run();
+
+    /** The displacement on the copy layer (locally owned cells). */
+    const dealii::Vector<double> &
+    copy_solution() const
+    {
+      return copy_values;
+    }
+
+    const TiedCopyDoFs<dim> &
+    dofs() const
+    {
+      return dof_layer;
+    }
+
+    const History &
+    history() const
+    {
+      return *summary;
+    }
+
+    /** Global norm of (u_h - exact) of the last step. */
+    double
+    compute_error(const Function<dim>          &exact,
+                  const VectorTools::NormType norm) const;
+
+  private:
+    const parameters::Parameters          &parameters;
+    const MPI_Comm                         comm;
+    ConditionalOStream                     pcout;
+    mutable TimerOutput                    timer;
+    parallel::shared::Triangulation<dim>   triangulation;
+    Laminate                               laminate;
+    std::vector<PlyProperties<dim>>        plies;
+    TiedCopyDoFs<dim>                      dof_layer;
+    Loads<dim>                             loads;
+    std::vector<PrescribedDisplacement<dim>> prescribed;
+    std::unique_ptr<PointProbe<dim>>       probe;
+    std::unique_ptr<History>               summary;
+    std::unique_ptr<FieldOutput<dim>>      field_output;
+
+    AffineConstraints<double>       constraints;
+    /** Per prescribed condition: the owned reduced dofs it constrains. */
+    std::vector<std::vector<types::global_dof_index>> supported_dofs;
+    TrilinosWrappers::SparseMatrix  system_matrix;
+    Vector                          solution;
+    Vector                          relevant_solution;
+    Vector                          system_rhs;
+    dealii::Vector<double>          copy_values;
+
+    void
+    build_loads_and_supports();
+    void
+    make_constraints(const double t);
+    std::vector<std::vector<double>>
+    rigid_body_modes() const;
+    void
+    postprocess(const unsigned int step, const double t);
+    void
+    prepare_output_directory() const;
+  };
+} // namespace amfrac

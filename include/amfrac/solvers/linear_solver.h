@@ -1,0 +1,64 @@
+#pragma once
+
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <amfrac/parameters/parameters.h>
+
+#include <memory>
+#include <vector>
+
+namespace amfrac
+{
+  using namespace dealii;
+
+  /**
+   * The linear solver of a scene: a sparse direct solver (Trilinos Amesos:
+   * MUMPS or KLU) or CG preconditioned by Trilinos ML smoothed-aggregation
+   * AMG with the rigid-body modes as near null space. The factorization or
+   * the AMG hierarchy is set up once per matrix and reused for every
+   * right-hand side.
+   */
+  class LinearSolver
+  {
+  public:
+    using Matrix = TrilinosWrappers::SparseMatrix;
+    using Vector = TrilinosWrappers::MPI::Vector;
+
+    explicit LinearSolver(const parameters::LinearSolver &parameters);
+
+    /**
+     * Factorize @p matrix, or build the AMG hierarchy from it and from
+     * @p near_null_space: one vector per mode, each holding the locally
+     * owned rows. Returns the wall time it took.
+     */
+    double
+    initialize(const Matrix                            &matrix,
+               const std::vector<std::vector<double>> &near_null_space,
+               const unsigned int                       n_pde_equations);
+
+    struct Report
+    {
+      unsigned int iterations = 0;
+      double       seconds    = 0;
+    };
+
+    /** Solve with the matrix of the last initialize(). Throws
+     * std::runtime_error naming the cause if CG does not converge. */
+    Report
+    solve(Vector &x, const Vector &b);
+
+    std::string
+    name() const;
+
+  private:
+    const parameters::LinearSolver                   parameters;
+    const Matrix                                    *matrix = nullptr;
+    std::unique_ptr<TrilinosWrappers::SolverDirect>  direct;
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
+    std::vector<double>                              null_space_storage;
+    SolverControl                                    direct_control;
+  };
+} // namespace amfrac

@@ -1,0 +1,269 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+
+#include <amfrac/assembly/elastic_assembler.h>
+
+namespace amfrac
+{
+  /** FEValues objects and work arrays reused from cell to cell. */
+  template <int dim>
+  class ElasticAssembler<dim>::Scratch
+  {
+  public:
+    Scratch(const FiniteElement<dim> &fe, const unsigned int degree)
+      : fe_values(fe,
+                  QGauss<dim>(degree),
+                  update_values | update_gradients | update_quadrature_points |
+                    update_JxW_values)
+      , face_values(fe,
+                    QGauss<dim - 1>(degree),
+                    update_values | update_quadrature_points |
+                      update_normal_vectors | update_JxW_values)
+      , strains(fe.n_dofs_per_cell())
+      , stresses(fe.n_dofs_per_cell())
+    {}
+
+    FEValues<dim>                         fe_values;
+    FEFaceValues<dim>                     face_values;
+    std::vector<SymmetricTensor<2, dim>>  strains;
+    std::vector<SymmetricTensor<2, dim>>  stresses;
+    const FEValuesExtractors::Vector      displacement{0};
+  };
+
+
+
+  template <int dim>
+  ElasticAssembler<dim>::ElasticAssembler(
+    const TiedCopyDoFs<dim>               &dofs,
+    const std::vector<PlyProperties<dim>> &plies)
+    : dofs(dofs)
+    , plies(plies)
+    , quadrature_degree(dofs.get_fe().degree + 1)
+  {}
+
+
+
+  template <int dim>
+  void
+  ElasticAssembler<dim>::reinit_matrix(
+    const AffineConstraints<double> &constraints,
+    Matrix                          &matrix) const
+  {
+    const MPI_Comm comm =
+      dofs.copy_handler().get_triangulation().get_communicator();
+    TrilinosWrappers::SparsityPattern pattern(dofs.locally_owned_dofs(),
+                                              dofs.locally_owned_dofs(),
+                                              dofs.locally_relevant_dofs(),
+                                              comm);
+    std::vector<types::global_dof_index> indices(
+      dofs.get_fe().n_dofs_per_cell());
+    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          dofs.get_dof_indices(cell, indices);
+          constraints.add_entries_local_to_global(indices, pattern, false);
+        }
+    pattern.compress();
+    matrix.reinit(pattern);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticAssembler<dim>::cell_matrix(Scratch           &scratch,
+                                     const unsigned int ply,
+                                     FullMatrix<double> &K) const
+  {
+    const auto        &C          = plies[ply].stiffness;
+    const auto        &fe_values  = scratch.fe_values;
+    const unsigned int n          = K.m();
+    K                             = 0;
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        const double JxW = fe_values.JxW(q);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            scratch.strains[i] =
+              fe_values[scratch.displacement].symmetric_gradient(i, q);
+            scratch.stresses[i] = C * scratch.strains[i] * JxW;
+          }
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j <= i; ++j)
+            K(i, j) += scratch.stresses[i] * scratch.strains[j];
+      }
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = i + 1; j < n; ++j)
+        K(i, j) = K(j, i);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticAssembler<dim>::cell_load(
+    Scratch                                        &scratch,
+    const typename TiedCopyDoFs<dim>::CellIterator &cell,
+    const Loads<dim>                               &loads,
+    const double                                    t,
+    dealii::Vector<double>                         &f) const
+  {
+    const auto &fe = dofs.get_fe();
+    f              = 0;
+    dealii::Vector<double> value(dim);
+    if (loads.body_force)
+      {
+        loads.body_force->set_time(t);
+        auto &fe_values = scratch.fe_values;
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            loads.body_force->vector_value(fe_values.quadrature_point(q),
+                                           value);
+            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              {
+                const unsigned int c = fe.system_to_component_index(i).first;
+                f(i) += fe_values.shape_value(i, q) * value(c) *
+                        fe_values.JxW(q);
+              }
+          }
+      }
+    for (const unsigned int face : cell->face_indices())
+      {
+        if (!cell->at_boundary(face) ||
+            !loads.on_face(cell->face(face)->boundary_id()))
+          continue;
+        const auto id = cell->face(face)->boundary_id();
+        auto      &fv = scratch.face_values;
+        fv.reinit(cell, face);
+        for (const unsigned int q : fv.quadrature_point_indices())
+          {
+            Tensor<1, dim> traction;
+            if (loads.tractions.count(id))
+              {
+                loads.tractions.at(id)->set_time(t);
+                loads.tractions.at(id)->vector_value(fv.quadrature_point(q),
+                                                     value);
+                for (unsigned int d = 0; d < dim; ++d)
+                  traction[d] += value(d);
+              }
+            if (loads.pressures.count(id))
+              {
+                loads.pressures.at(id)->set_time(t);
+                traction -= loads.pressures.at(id)->value(
+                              fv.quadrature_point(q)) *
+                            fv.normal_vector(q);
+              }
+            for (const unsigned int i : dofs.dofs_on_face(face))
+              {
+                const unsigned int c = fe.system_to_component_index(i).first;
+                f(i) += fv.shape_value(i, q) * traction[c] * fv.JxW(q);
+              }
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticAssembler<dim>::assemble_matrix(
+    const AffineConstraints<double> &constraints,
+    Matrix                          &matrix) const
+  {
+    const unsigned int n = dofs.get_fe().n_dofs_per_cell();
+    Scratch            scratch(dofs.get_fe(), quadrature_degree);
+    FullMatrix<double> K(n, n);
+    std::vector<types::global_dof_index> indices(n);
+    matrix = 0;
+    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          scratch.fe_values.reinit(cell);
+          cell_matrix(scratch, cell->material_id(), K);
+          dofs.get_dof_indices(cell, indices);
+          constraints.distribute_local_to_global(K, indices, matrix);
+        }
+    matrix.compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticAssembler<dim>::assemble_rhs(
+    const Loads<dim>                &loads,
+    const double                     t,
+    const AffineConstraints<double> &constraints,
+    Vector                          &rhs) const
+  {
+    const unsigned int     n = dofs.get_fe().n_dofs_per_cell();
+    Scratch                scratch(dofs.get_fe(), quadrature_degree);
+    FullMatrix<double>     K(n, n);
+    dealii::Vector<double> f(n);
+    std::vector<types::global_dof_index> indices(n);
+    rhs = 0;
+    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          scratch.fe_values.reinit(cell);
+          dofs.get_dof_indices(cell, indices);
+          cell_load(scratch, cell, loads, t, f);
+          const bool inhomogeneous =
+            std::any_of(indices.begin(), indices.end(), [&](const auto i) {
+              return constraints.is_inhomogeneously_constrained(i);
+            });
+          if (inhomogeneous)
+            {
+              cell_matrix(scratch, cell->material_id(), K);
+              constraints.distribute_local_to_global(f, indices, rhs, K);
+            }
+          else
+            constraints.distribute_local_to_global(f, indices, rhs);
+        }
+    rhs.compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  typename ElasticAssembler<dim>::Energies
+  ElasticAssembler<dim>::compute_residual(const Loads<dim> &loads,
+                                          const double      t,
+                                          const Vector     &solution,
+                                          Vector           &residual) const
+  {
+    const unsigned int     n = dofs.get_fe().n_dofs_per_cell();
+    Scratch                scratch(dofs.get_fe(), quadrature_degree);
+    FullMatrix<double>     K(n, n);
+    dealii::Vector<double> f(n), u(n), r(n);
+    std::vector<types::global_dof_index> indices(n);
+    Energies                             energies;
+    residual = 0;
+    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          scratch.fe_values.reinit(cell);
+          dofs.get_dof_indices(cell, indices);
+          for (unsigned int i = 0; i < n; ++i)
+            u(i) = solution(indices[i]);
+          cell_matrix(scratch, cell->material_id(), K);
+          cell_load(scratch, cell, loads, t, f);
+          K.vmult(r, u);
+          energies.strain_energy += 0.5 * (r * u);
+          energies.load_work += f * u;
+          r -= f;
+          residual.add(indices, r);
+        }
+    residual.compress(VectorOperation::add);
+    const MPI_Comm comm =
+      dofs.copy_handler().get_triangulation().get_communicator();
+    energies.strain_energy =
+      Utilities::MPI::sum(energies.strain_energy, comm);
+    energies.load_work = Utilities::MPI::sum(energies.load_work, comm);
+    return energies;
+  }
+
+  template class ElasticAssembler<2>;
+  template class ElasticAssembler<3>;
+} // namespace amfrac

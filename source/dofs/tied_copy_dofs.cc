@@ -1,0 +1,233 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_dgq.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+
+#include <amfrac/dofs/tied_copy_dofs.h>
+
+#include <stdexcept>
+
+namespace amfrac
+{
+  namespace
+  {
+    types::global_dof_index
+    find_root(std::vector<types::global_dof_index> &parent,
+              types::global_dof_index               i)
+    {
+      while (parent[i] != i)
+        {
+          parent[i] = parent[parent[i]]; // path halving
+          i         = parent[i];
+        }
+      return i;
+    }
+
+    void
+    unite(std::vector<types::global_dof_index> &parent,
+          const types::global_dof_index         a,
+          const types::global_dof_index         b)
+    {
+      const auto ra = find_root(parent, a), rb = find_root(parent, b);
+      if (ra != rb)
+        parent[std::max(ra, rb)] = std::min(ra, rb);
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  TiedCopyDoFs<dim>::TiedCopyDoFs(const Triangulation<dim> &triangulation,
+                                  const unsigned int        degree)
+    : triangulation(triangulation)
+    , fe(std::make_unique<FESystem<dim>>(
+        FE_DGQArbitraryNodes<dim>(QGaussLobatto<1>(degree + 1)),
+        dim))
+    , dof_handler(triangulation)
+    , face_dofs(GeometryInfo<dim>::faces_per_cell)
+  {
+    // A dof lies on reference face f if its support point has coordinate
+    // f%2 along axis f/2.
+    const auto &unit_points = fe->get_unit_support_points();
+    for (unsigned int f = 0; f < GeometryInfo<dim>::faces_per_cell; ++f)
+      for (unsigned int i = 0; i < unit_points.size(); ++i)
+        if (std::abs(unit_points[i][f / 2] - double(f % 2)) < 1e-12)
+          face_dofs[f].push_back(i);
+  }
+
+
+
+  template <int dim>
+  void
+  TiedCopyDoFs<dim>::distribute(const FaceFilter &released)
+  {
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (!cell->at_boundary(f) && cell->neighbor_is_coarser(f))
+          throw std::logic_error(
+            "TiedCopyDoFs: meshes with hanging nodes are not supported yet "
+            "(adaptive refinement comes with the adaptivity issue)");
+
+    dof_handler.distribute_dofs(*fe);
+    const unsigned int n_local = fe->n_dofs_per_cell();
+
+    // Real positions of all copies: copies are tied by position, so no
+    // face-orientation logic is needed.
+    std::vector<Point<dim>> copy_position(dof_handler.n_dofs());
+    const MappingQ1<dim>    mapping;
+    FEValues<dim>           fe_values(mapping,
+                            *fe,
+                            Quadrature<dim>(fe->get_unit_support_points()),
+                            update_quadrature_points);
+    std::vector<types::global_dof_index> local(n_local);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        cell->get_dof_indices(local);
+        for (unsigned int i = 0; i < n_local; ++i)
+          copy_position[local[i]] = fe_values.quadrature_point(i);
+      }
+
+    std::vector<types::global_dof_index> parent(dof_handler.n_dofs());
+    for (types::global_dof_index i = 0; i < parent.size(); ++i)
+      parent[i] = i;
+    tie_faces(released, copy_position, parent);
+    number_groups(parent, copy_position);
+  }
+
+
+
+  template <int dim>
+  void
+  TiedCopyDoFs<dim>::tie_faces(
+    const FaceFilter                     &released,
+    const std::vector<Point<dim>>        &copy_position,
+    std::vector<types::global_dof_index> &parent) const
+  {
+    const unsigned int                   n_local = fe->n_dofs_per_cell();
+    std::vector<types::global_dof_index> mine(n_local), theirs(n_local);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        {
+          if (cell->at_boundary(f))
+            continue;
+          const auto neighbor = cell->neighbor(f);
+          // Each conforming face once, from the cell with the lower index.
+          if (neighbor->index() < cell->index() || (released && released(cell, f)))
+            continue;
+          const unsigned int nf = cell->neighbor_of_neighbor(f);
+          cell->get_dof_indices(mine);
+          neighbor->get_dof_indices(theirs);
+          const double tol = 1e-8 * cell->diameter();
+          for (const unsigned int i : face_dofs[f])
+            for (const unsigned int j : face_dofs[nf])
+              if (fe->system_to_component_index(i).first ==
+                    fe->system_to_component_index(j).first &&
+                  copy_position[mine[i]].distance(copy_position[theirs[j]]) <
+                    tol)
+                unite(parent, mine[i], theirs[j]);
+        }
+  }
+
+
+
+  template <int dim>
+  void
+  TiedCopyDoFs<dim>::number_groups(
+    std::vector<types::global_dof_index> &parent,
+    const std::vector<Point<dim>>        &copy_position)
+  {
+    const MPI_Comm comm = triangulation.get_communicator();
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int n_local = fe->n_dofs_per_cell();
+    const unsigned int n_nodes = n_local / dim;
+
+    // Visit the cells rank by rank and, inside a cell, node by node: a
+    // group gets its number at its first visit, so ranks own contiguous
+    // blocks and the components of a node are consecutive.
+    std::vector<std::vector<CellIterator>> cells_of_rank(n_ranks);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      cells_of_rank[n_ranks == 1 ? 0 : cell->subdomain_id()].push_back(cell);
+
+    const auto invalid = numbers::invalid_dof_index;
+    std::vector<types::global_dof_index> group_number(parent.size(), invalid);
+    std::vector<types::global_dof_index> local(n_local);
+    support_points.clear();
+    components.clear();
+    types::global_dof_index owned_begin = 0, owned_end = 0;
+    for (unsigned int rank = 0; rank < n_ranks; ++rank)
+      {
+        if (rank == my_rank)
+          owned_begin = support_points.size();
+        for (const auto &cell : cells_of_rank[rank])
+          {
+            cell->get_dof_indices(local);
+            for (unsigned int node = 0; node < n_nodes; ++node)
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  const auto copy = local[fe->component_to_system_index(c, node)];
+                  const auto root = find_root(parent, copy);
+                  if (group_number[root] != invalid)
+                    continue;
+                  group_number[root] = support_points.size();
+                  support_points.push_back(copy_position[copy]);
+                  components.push_back(c);
+                }
+          }
+        if (rank == my_rank)
+          owned_end = support_points.size();
+      }
+
+    copy_to_reduced.resize(parent.size());
+    for (types::global_dof_index c = 0; c < parent.size(); ++c)
+      copy_to_reduced[c] = group_number[find_root(parent, c)];
+
+    owned_dofs = IndexSet(n_dofs());
+    owned_dofs.add_range(owned_begin, owned_end);
+    relevant_dofs = owned_dofs;
+    std::vector<types::global_dof_index> relevant;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(local);
+          for (const auto c : local)
+            relevant.push_back(copy_to_reduced[c]);
+        }
+    std::sort(relevant.begin(), relevant.end());
+    relevant.erase(std::unique(relevant.begin(), relevant.end()),
+                   relevant.end());
+    relevant_dofs.add_indices(relevant.begin(), relevant.end());
+    relevant_dofs.compress();
+  }
+
+
+
+  template <int dim>
+  void
+  TiedCopyDoFs<dim>::get_dof_indices(
+    const CellIterator                   &cell,
+    std::vector<types::global_dof_index> &indices) const
+  {
+    cell->get_dof_indices(indices);
+    for (auto &i : indices)
+      i = copy_to_reduced[i];
+  }
+
+
+
+  template <int dim>
+  std::size_t
+  TiedCopyDoFs<dim>::memory_consumption() const
+  {
+    return dof_handler.memory_consumption() +
+           copy_to_reduced.capacity() * sizeof(types::global_dof_index) +
+           support_points.capacity() * sizeof(Point<dim>) +
+           components.capacity() + owned_dofs.memory_consumption() +
+           relevant_dofs.memory_consumption();
+  }
+
+  template class TiedCopyDoFs<2>;
+  template class TiedCopyDoFs<3>;
+} // namespace amfrac

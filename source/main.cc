@@ -1,0 +1,110 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <amfrac/parameters/input_error.h>
+#include <amfrac/parameters/parameters.h>
+#include <amfrac/simulator/simulator.h>
+
+#include <iostream>
+#include <string>
+
+namespace
+{
+  const char *usage =
+    "usage: amfrac [options] FILE.prm\n"
+    "       mpirun -np N amfrac FILE.prm\n"
+    "\n"
+    "Adaptive Multi-FRActure analysis of Composites: runs the scene that\n"
+    "FILE.prm describes and writes its output to Output/Directory.\n"
+    "\n"
+    "options:\n"
+    "  -h, --help              this text\n"
+    "  -p, --print-parameters  every parameter with its default, pattern\n"
+    "                          and documentation (units in brackets)\n";
+
+  void
+  print_parameters()
+  {
+    dealii::ParameterHandler prm;
+    amfrac::parameters::Parameters::declare_parameters(prm);
+    prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
+  }
+
+  /** One line on rank 0, non-zero exit status. */
+  int
+  fail(const std::string &message, const bool is_root)
+  {
+    if (is_root)
+      std::cerr << "amfrac: error: " << message << std::endl;
+    return 1;
+  }
+} // namespace
+
+
+
+int
+main(int argc, char *argv[])
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const MPI_Comm comm    = MPI_COMM_WORLD;
+  const bool     is_root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+  dealii::deal_II_exceptions::disable_abort_on_exception();
+
+  std::string file;
+  for (int i = 1; i < argc; ++i)
+    {
+      const std::string arg = argv[i];
+      if (arg == "-h" || arg == "--help")
+        {
+          if (is_root)
+            std::cout << usage;
+          return 0;
+        }
+      if (arg == "-p" || arg == "--print-parameters")
+        {
+          if (is_root)
+            print_parameters();
+          return 0;
+        }
+      if (!arg.empty() && arg[0] == '-')
+        return fail("unknown option '" + arg + "' (see amfrac --help)",
+                    is_root);
+      if (!file.empty())
+        return fail("more than one parameter file given", is_root);
+      file = arg;
+    }
+  if (file.empty())
+    {
+      if (is_root)
+        std::cerr << usage;
+      return 2;
+    }
+
+  try
+    {
+      const auto parameters = amfrac::parameters::Parameters::from_file(file);
+      if (parameters.dimension == 2)
+        amfrac::Simulator<2>(parameters, comm).run();
+      else
+        amfrac::Simulator<3>(parameters, comm).run();
+    }
+  catch (const amfrac::InputError &e)
+    {
+      return fail(std::string(e.what()) + " [in " + file + "]", is_root);
+    }
+  catch (const dealii::ExceptionBase &e)
+    {
+      std::ostringstream text;
+      e.print_info(text);
+      std::string message = text.str();
+      for (auto &c : message)
+        if (c == '\n')
+          c = ' ';
+      return fail(message, is_root);
+    }
+  catch (const std::exception &e)
+    {
+      return fail(e.what(), is_root);
+    }
+  return 0;
+}

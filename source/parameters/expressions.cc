@@ -1,0 +1,120 @@
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/lac/vector.h>
+
+#include <amfrac/parameters/expressions.h>
+#include <amfrac/parameters/input_error.h>
+
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace amfrac
+{
+  namespace
+  {
+    std::map<std::string, double>
+    parse_constants(const std::string &text, const std::string &parameter)
+    {
+      std::map<std::string, double> constants{{"pi", M_PI}};
+      for (const std::string &item : Utilities::split_string_list(text, ','))
+        {
+          const auto parts = Utilities::split_string_list(item, '=');
+          double     value = 0;
+          bool       ok    = parts.size() == 2 && !parts[0].empty();
+          if (ok)
+            {
+              try
+                {
+                  value = Utilities::string_to_double(parts[1]);
+                }
+              catch (...)
+                {
+                  ok = false;
+                }
+            }
+          require(ok,
+                  parameter,
+                  "a constant must read 'name=value', got '" + item + "'");
+          constants[parts[0]] = value;
+        }
+      return constants;
+    }
+
+    std::string
+    join(const std::vector<std::string> &parts)
+    {
+      std::string result;
+      for (const auto &p : parts)
+        result += (result.empty() ? "" : "; ") + p;
+      return result;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  std::shared_ptr<Function<dim>>
+  make_expression_function(const std::vector<std::string> &expressions,
+                           const unsigned int              n_components,
+                           const std::string              &constants,
+                           const std::string              &parameter)
+  {
+    std::vector<std::string> all = expressions;
+    if (all.size() == 1)
+      all.assign(n_components, expressions[0]);
+    require(all.size() == n_components,
+            parameter,
+            "expects one expression or " + std::to_string(n_components) +
+              " separated by ';', got " + std::to_string(expressions.size()));
+    for (const auto &e : all)
+      require(!e.empty(), parameter, "an expression is empty");
+
+    auto function = std::make_shared<FunctionParser<dim>>(n_components);
+    try
+      {
+        function->initialize(
+          FunctionParser<dim>::default_variable_names() + ",t",
+          all,
+          parse_constants(constants, "Boundary conditions/Function constants"),
+          true);
+        // muparser compiles lazily: evaluate once to reject bad input now.
+        dealii::Vector<double> probe(n_components);
+        function->vector_value(Point<dim>(), probe);
+      }
+    catch (const InputError &)
+      {
+        throw;
+      }
+    catch (const ExceptionBase &e)
+      {
+        std::ostringstream text;
+        e.print_info(text);
+        std::string message = text.str();
+        for (auto &c : message)
+          if (c == '\n')
+            c = ' ';
+        throw InputError(parameter,
+                         "cannot parse '" + join(all) +
+                           "': " + Utilities::trim(message));
+      }
+    catch (const std::exception &e)
+      {
+        throw InputError(parameter,
+                         "cannot parse '" + join(all) +
+                           "': " + e.what());
+      }
+    return function;
+  }
+
+  template std::shared_ptr<Function<2>>
+  make_expression_function<2>(const std::vector<std::string> &,
+                              const unsigned int,
+                              const std::string &,
+                              const std::string &);
+  template std::shared_ptr<Function<3>>
+  make_expression_function<3>(const std::vector<std::string> &,
+                              const unsigned int,
+                              const std::string &,
+                              const std::string &);
+} // namespace amfrac

@@ -1,0 +1,679 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <amfrac/geometry/stacking_sequence.h>
+#include <amfrac/parameters/input_error.h>
+#include <amfrac/parameters/parameters.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace amfrac
+{
+  namespace parameters
+  {
+    std::vector<std::string>
+    split_expressions(const std::string &text)
+    {
+      std::vector<std::string> parts =
+        Utilities::split_string_list(text, ';');
+      for (auto &p : parts)
+        p = Utilities::trim(p);
+      return parts;
+    }
+
+
+
+    void
+    Geometry::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Geometry");
+      prm.declare_entry("Stacking sequence",
+                        "[0/90]s",
+                        Patterns::Anything(),
+                        "Ply angles in degrees from the bottom (smallest "
+                        "thickness coordinate) up, e.g. [0/90/45/-45]s, "
+                        "[0_4/0_16], [(0/90)_2]s, [+-45], [0@glass/90].");
+      prm.declare_entry("Ply thickness",
+                        "0.125",
+                        Patterns::List(Patterns::Double()),
+                        "Thickness of each ply in mm: one value for all "
+                        "plies or one value per ply.");
+      prm.declare_entry("Total thickness",
+                        "0",
+                        Patterns::Double(0),
+                        "If positive, the laminate thickness in mm, split "
+                        "into plies of equal thickness (overrides Ply "
+                        "thickness).");
+      prm.declare_entry("Length",
+                        "10",
+                        Patterns::Double(),
+                        "Extent along x in mm (the 0-degree direction).");
+      prm.declare_entry("Width",
+                        "10",
+                        Patterns::Double(),
+                        "Extent along y in mm (3D only; in 2D the width is "
+                        "the out-of-plane direction of plane strain).");
+      prm.declare_entry("Elements along length",
+                        "8",
+                        Patterns::Integer(1),
+                        "Number of elements along x.");
+      prm.declare_entry("Elements along width",
+                        "8",
+                        Patterns::Integer(1),
+                        "Number of elements along y (3D only).");
+      prm.declare_entry("Elements per ply",
+                        "1",
+                        Patterns::Integer(1),
+                        "Number of elements through the thickness of each "
+                        "ply.");
+      prm.declare_entry("Global refinements",
+                        "0",
+                        Patterns::Integer(0, 10),
+                        "Uniform refinements of the structured mesh.");
+      prm.declare_entry("Mesh distortion",
+                        "0",
+                        Patterns::Double(0, 0.4),
+                        "Random interior-vertex perturbation as a fraction "
+                        "of the element size (for patch tests); ply "
+                        "interfaces stay planar.");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Geometry::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Geometry");
+      stacking_sequence = prm.get("Stacking sequence");
+      ply_thickness     = Utilities::string_to_double(
+        Utilities::split_string_list(prm.get("Ply thickness")));
+      total_thickness       = prm.get_double("Total thickness");
+      length                = prm.get_double("Length");
+      width                 = prm.get_double("Width");
+      elements_along_length = prm.get_integer("Elements along length");
+      elements_along_width  = prm.get_integer("Elements along width");
+      elements_per_ply      = prm.get_integer("Elements per ply");
+      global_refinements    = prm.get_integer("Global refinements");
+      mesh_distortion       = prm.get_double("Mesh distortion");
+      prm.leave_subsection();
+
+      require(length > 0, "Geometry/Length", "must be positive");
+      require(width > 0, "Geometry/Width", "must be positive");
+      std::vector<Ply> plies;
+      try
+        {
+          plies = parse_stacking_sequence(stacking_sequence);
+        }
+      catch (const std::invalid_argument &e)
+        {
+          throw InputError("Geometry/Stacking sequence", e.what());
+        }
+      if (total_thickness > 0)
+        ply_thickness.assign(plies.size(),
+                             total_thickness / plies.size());
+      require(ply_thickness.size() == 1 ||
+                ply_thickness.size() == plies.size(),
+              "Geometry/Ply thickness",
+              "give one value or one per ply (" +
+                std::to_string(plies.size()) + " plies), got " +
+                std::to_string(ply_thickness.size()));
+      if (ply_thickness.size() == 1)
+        ply_thickness.assign(plies.size(), ply_thickness[0]);
+      for (const double t : ply_thickness)
+        require(t > 0, "Geometry/Ply thickness", "must be positive");
+    }
+
+
+
+    namespace
+    {
+      /** The entries of `subsection Materials`, with defaults for a
+       * carbon/epoxy ply (MPa, t/mm^3). */
+      const std::vector<std::pair<const char *, const char *>>
+        material_entries = {{"E1", "135000"},
+                            {"E2", "10000"},
+                            {"E3", "10000"},
+                            {"G12", "5000"},
+                            {"G13", "5000"},
+                            {"G23", "3448"},
+                            {"nu12", "0.3"},
+                            {"nu13", "0.3"},
+                            {"nu23", "0.45"},
+                            {"Density", "1.6e-9"},
+                            {"Xt", "2000"},
+                            {"Xc", "1200"},
+                            {"Yt", "50"},
+                            {"Yc", "200"},
+                            {"Zt", "50"},
+                            {"Zc", "200"},
+                            {"S12", "80"},
+                            {"S13", "80"},
+                            {"S23", "60"}};
+    } // namespace
+
+
+
+    void
+    Materials::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Materials");
+      prm.declare_entry("Names",
+                        "cfrp",
+                        Patterns::List(Patterns::Anything(), 1),
+                        "Names of the materials; a ply refers to one with "
+                        "'angle@name' in the stacking sequence, the first is "
+                        "the default. Every entry below is a list with one "
+                        "value per name, or a single value for all.");
+      for (const auto &[name, value] : material_entries)
+        {
+          const std::string n(name);
+          const std::string unit =
+            n == "Density" ? "t/mm^3" : (n.rfind("nu", 0) == 0 ? "-" : "MPa");
+          const std::string what =
+            n.rfind("nu", 0) == 0 ?
+              "Poisson ratio" :
+              (n == "Density" ? "mass density" :
+                                (n[0] == 'E' || n[0] == 'G' ?
+                                   "elastic modulus in material axes" :
+                                   "Hoffman strength (positive magnitude)"));
+          prm.declare_entry(n,
+                            value,
+                            Patterns::List(Patterns::Double()),
+                            what + " [" + unit + "]");
+        }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Materials::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Materials");
+      const std::vector<std::string> names =
+        Utilities::split_string_list(prm.get("Names"));
+      std::map<std::string, std::vector<double>> values;
+      for (const auto &[name, value] : material_entries)
+        {
+          (void)value;
+          values[name] = Utilities::string_to_double(
+            Utilities::split_string_list(prm.get(name)));
+          require(values[name].size() == 1 ||
+                    values[name].size() == names.size(),
+                  std::string("Materials/") + name,
+                  "give one value or one per material name (" +
+                    std::to_string(names.size()) + ")");
+        }
+      prm.leave_subsection();
+
+      const auto get = [&](const char *key, const unsigned int m) {
+        const auto &v = values[key];
+        return v.size() == 1 ? v[0] : v[m];
+      };
+      materials.clear();
+      for (unsigned int m = 0; m < names.size(); ++m)
+        {
+          OrthotropicMaterial mat;
+          mat.name             = names[m];
+          ElasticConstants &e  = mat.elastic;
+          e.E1                 = get("E1", m);
+          e.E2                 = get("E2", m);
+          e.E3                 = get("E3", m);
+          e.G12                = get("G12", m);
+          e.G13                = get("G13", m);
+          e.G23                = get("G23", m);
+          e.nu12               = get("nu12", m);
+          e.nu13               = get("nu13", m);
+          e.nu23               = get("nu23", m);
+          e.density            = get("Density", m);
+          Strengths &s         = mat.strengths;
+          s.Xt                 = get("Xt", m);
+          s.Xc                 = get("Xc", m);
+          s.Yt                 = get("Yt", m);
+          s.Yc                 = get("Yc", m);
+          s.Zt                 = get("Zt", m);
+          s.Zc                 = get("Zc", m);
+          s.S12                = get("S12", m);
+          s.S13                = get("S13", m);
+          s.S23                = get("S23", m);
+          const std::string at = " (material '" + mat.name + "')";
+          try
+            {
+              stiffness_in_material_axes(e);
+            }
+          catch (const std::invalid_argument &error)
+            {
+              throw InputError("Materials", error.what() + at);
+            }
+          require(e.density >= 0, "Materials/Density", "negative" + at);
+          for (const auto &[key, value] : material_entries)
+            if (key[0] == 'X' || key[0] == 'Y' || key[0] == 'Z' ||
+                key[0] == 'S')
+              {
+                (void)value;
+                require(get(key, m) > 0,
+                        std::string("Materials/") + key,
+                        "strengths must be positive" + at);
+              }
+          materials.push_back(mat);
+        }
+    }
+
+
+
+    unsigned int
+    Materials::index_of(const std::string &name) const
+    {
+      if (name.empty())
+        return 0;
+      for (unsigned int m = 0; m < materials.size(); ++m)
+        if (materials[m].name == name)
+          return m;
+      throw InputError("Geometry/Stacking sequence",
+                       "unknown material '" + name +
+                         "' (not in Materials/Names)");
+    }
+
+
+
+    void
+    Discretization::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Discretization");
+      prm.declare_entry("Finite element degree",
+                        "1",
+                        Patterns::Integer(1, 2),
+                        "Polynomial degree of the displacement (1 = "
+                        "trilinear hexahedra, 2 = triquadratic).");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Discretization::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Discretization");
+      degree = prm.get_integer("Finite element degree");
+      prm.leave_subsection();
+    }
+
+
+
+    const std::array<const char *, 6> BoundaryConditions::face_names = {
+      {"x-", "x+", "y-", "y+", "z-", "z+"}};
+
+
+
+    void
+    BoundaryConditions::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Boundary conditions");
+      prm.declare_entry("Function constants",
+                        "",
+                        Patterns::Anything(),
+                        "Constants for all expressions below, as "
+                        "'name=value, name=value'; pi is always defined.");
+      prm.declare_entry("Body force",
+                        "0",
+                        Patterns::Anything(),
+                        "Force per volume [N/mm^3]: one expression for all "
+                        "components or one per component separated by ';', "
+                        "in x, y, (z,) t.");
+      for (const char *face : face_names)
+        {
+          prm.enter_subsection(face);
+          prm.declare_entry(
+            "Type",
+            "free",
+            Patterns::Selection("free|displacement|traction|pressure"),
+            "Boundary condition on this face of the laminate box. The "
+            "thickness axis is z in 3D and y in 2D.");
+          prm.declare_entry("Components",
+                            "x, y, z",
+                            Patterns::List(Patterns::Selection("x|y|z")),
+                            "Displacement components prescribed (Type = "
+                            "displacement).");
+          prm.declare_entry("Displacement",
+                            "0",
+                            Patterns::Anything(),
+                            "Prescribed displacement [mm]: expressions in "
+                            "x, y, (z,) t separated by ';' (one for all "
+                            "components or one per component).");
+          prm.declare_entry("Where",
+                            "",
+                            Patterns::Anything(),
+                            "Optional condition: the displacement is "
+                            "prescribed only at nodes of this face where the "
+                            "expression is nonzero, e.g. abs(z-1)<1e-6.");
+          prm.declare_entry("Traction",
+                            "0",
+                            Patterns::Anything(),
+                            "Traction vector [MPa] (Type = traction), "
+                            "expressions separated by ';'.");
+          prm.declare_entry("Pressure",
+                            "0",
+                            Patterns::Anything(),
+                            "Pressure [MPa] acting against the outward "
+                            "normal (Type = pressure).");
+          prm.leave_subsection();
+        }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    BoundaryConditions::parse_parameters(ParameterHandler &prm,
+                                         const unsigned int dim)
+    {
+      prm.enter_subsection("Boundary conditions");
+      constants  = prm.get("Function constants");
+      body_force = split_expressions(prm.get("Body force"));
+      faces.clear();
+      for (unsigned int f = 0; f < face_names.size(); ++f)
+        {
+          prm.enter_subsection(face_names[f]);
+          BoundaryFace face;
+          face.name               = face_names[f];
+          const std::string &type = prm.get("Type");
+          face.type               = type == "displacement" ?
+                                      BoundaryFace::Type::displacement :
+                                      type == "traction" ?
+                                      BoundaryFace::Type::traction :
+                                      type == "pressure" ? BoundaryFace::Type::pressure :
+                                                           BoundaryFace::Type::free;
+          face.components         = {{false, false, false}};
+          for (const std::string &c :
+               Utilities::split_string_list(prm.get("Components")))
+            face.components[c[0] - 'x'] = true;
+          face.displacement = split_expressions(prm.get("Displacement"));
+          face.traction     = split_expressions(prm.get("Traction"));
+          face.pressure     = prm.get("Pressure");
+          face.where        = Utilities::trim(prm.get("Where"));
+          prm.leave_subsection();
+
+          const std::string path =
+            std::string("Boundary conditions/") + face.name;
+          if (f >= 2 * dim)
+            require(face.type == BoundaryFace::Type::free,
+                    path + "/Type",
+                    "boundary face '" + face.name +
+                      "' does not exist in " + std::to_string(dim) +
+                      "D (faces are x-, x+, y-, y+" +
+                      (dim == 3 ? ", z-, z+)" : ")"));
+          if (face.type == BoundaryFace::Type::displacement)
+            for (unsigned int c = dim; c < 3; ++c)
+              require(!face.components[c],
+                      path + "/Components",
+                      "component z does not exist in 2D");
+          faces.push_back(face);
+        }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    LinearSolver::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Linear solver");
+      prm.declare_entry("Solver",
+                        "direct",
+                        Patterns::Selection("direct|cg-amg"),
+                        "direct: sparse LU through Trilinos Amesos; cg-amg: "
+                        "conjugate gradients with Trilinos ML algebraic "
+                        "multigrid given the rigid-body modes.");
+      prm.declare_entry("Direct package",
+                        "mumps",
+                        Patterns::Selection("mumps|klu"),
+                        "Amesos package for Solver = direct.");
+      prm.declare_entry("Tolerance",
+                        "1e-10",
+                        Patterns::Double(0),
+                        "Relative residual tolerance of CG.");
+      prm.declare_entry("Max iterations",
+                        "2000",
+                        Patterns::Integer(1),
+                        "Iteration limit of CG.");
+      prm.declare_entry("AMG smoother sweeps",
+                        "2",
+                        Patterns::Integer(1),
+                        "Pre- and post-smoothing sweeps per level.");
+      prm.declare_entry("AMG smoother type",
+                        "Chebyshev",
+                        Patterns::Selection(
+                          "Chebyshev|symmetric Gauss-Seidel|ILU"),
+                        "ML smoother.");
+      prm.declare_entry("AMG aggregation threshold",
+                        "1e-4",
+                        Patterns::Double(0),
+                        "ML aggregation threshold (drop tolerance for "
+                        "the strength of connection).");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    LinearSolver::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Linear solver");
+      type = prm.get("Solver") == "direct" ? Type::direct : Type::cg_amg;
+      direct_package        = prm.get("Direct package");
+      tolerance             = prm.get_double("Tolerance");
+      max_iterations        = prm.get_integer("Max iterations");
+      smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
+      smoother_type         = prm.get("AMG smoother type");
+      aggregation_threshold = prm.get_double("AMG aggregation threshold");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Time::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Time");
+      prm.declare_entry("End time",
+                        "1",
+                        Patterns::Double(0),
+                        "Pseudo-time at the end of the load history; "
+                        "expressions see it as t.");
+      prm.declare_entry("Number of steps",
+                        "1",
+                        Patterns::Integer(1),
+                        "Number of load steps from t = 0 to End time.");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Time::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Time");
+      end_time = prm.get_double("End time");
+      n_steps  = prm.get_integer("Number of steps");
+      prm.leave_subsection();
+      require(end_time > 0, "Time/End time", "must be positive");
+    }
+
+
+
+    void
+    Output::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      prm.declare_entry("Directory",
+                        "output",
+                        Patterns::Anything(),
+                        "Folder for all output (created if missing).");
+      prm.declare_entry("Base name",
+                        "solution",
+                        Patterns::Anything(),
+                        "Prefix of the field files.");
+      prm.declare_entry("Field format",
+                        "vtu",
+                        Patterns::Selection("vtu|xdmf|vtu+xdmf|none"),
+                        "vtu: VTU per rank with PVTU/PVD records; xdmf: "
+                        "one HDF5 file per step with an XDMF record.");
+      prm.declare_entry("Write every",
+                        "1",
+                        Patterns::Integer(1),
+                        "Write fields every this many steps (and at the "
+                        "last).");
+      prm.declare_entry("Point values",
+                        "",
+                        Patterns::Anything(),
+                        "Points [mm] whose displacement and stress go to "
+                        "the CSV history, as 'x,y,z; x,y,z' (x,y in 2D).");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Output::parse_parameters(ParameterHandler &prm, const unsigned int dim)
+    {
+      prm.enter_subsection("Output");
+      directory                = prm.get("Directory");
+      base_name                = prm.get("Base name");
+      const std::string format = prm.get("Field format");
+      write_vtu                = format == "vtu" || format == "vtu+xdmf";
+      write_xdmf               = format == "xdmf" || format == "vtu+xdmf";
+      every_n_steps            = prm.get_integer("Write every");
+      const std::string text   = prm.get("Point values");
+      prm.leave_subsection();
+
+      require(!directory.empty(), "Output/Directory", "must not be empty");
+      require(!base_name.empty() &&
+                base_name.find('/') == std::string::npos,
+              "Output/Base name",
+              "must be a plain file name");
+      points.clear();
+      for (const std::string &p : split_expressions(text))
+        {
+          if (p.empty())
+            continue;
+          std::vector<double> c;
+          try
+            {
+              c = Utilities::string_to_double(
+                Utilities::split_string_list(p, ','));
+            }
+          catch (...)
+            {
+              c.clear();
+            }
+          require(c.size() == dim,
+                  "Output/Point values",
+                  "each point needs " + std::to_string(dim) +
+                    " numbers separated by ',', got '" + p + "'");
+          Point<3> point;
+          for (unsigned int d = 0; d < dim; ++d)
+            point[d] = c[d];
+          points.push_back(point);
+        }
+    }
+
+
+
+    void
+    Parameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry("Dimension",
+                        "3",
+                        Patterns::Integer(2, 3),
+                        "2: plane strain in the (x, thickness) plane; 3: "
+                        "full 3D laminate.");
+      Geometry::declare_parameters(prm);
+      Materials::declare_parameters(prm);
+      Discretization::declare_parameters(prm);
+      BoundaryConditions::declare_parameters(prm);
+      LinearSolver::declare_parameters(prm);
+      Time::declare_parameters(prm);
+      Output::declare_parameters(prm);
+    }
+
+
+
+    void
+    Parameters::parse_parameters(ParameterHandler &prm)
+    {
+      dimension = prm.get_integer("Dimension");
+      geometry.parse_parameters(prm);
+      materials.parse_parameters(prm);
+      for (const Ply &ply : parse_stacking_sequence(geometry.stacking_sequence))
+        materials.index_of(ply.material);
+      discretization.parse_parameters(prm);
+      boundary_conditions.parse_parameters(prm, dimension);
+      linear_solver.parse_parameters(prm);
+      time.parse_parameters(prm);
+      output.parse_parameters(prm, dimension);
+    }
+
+
+
+    namespace
+    {
+      /** deal.II's message of a parser exception, on one line. */
+      std::string
+      one_line(const ExceptionBase &e)
+      {
+        std::ostringstream out;
+        e.print_info(out);
+        std::string text = out.str(), result;
+        for (const char c : text)
+          if (c == '\n')
+            result += ' ';
+          else
+            result += c;
+        return Utilities::trim(result);
+      }
+
+      template <typename Reader>
+      Parameters
+      read_parameters(const Reader &reader, const std::string &source)
+      {
+        ParameterHandler prm;
+        Parameters::declare_parameters(prm);
+        try
+          {
+            reader(prm);
+          }
+        catch (const ExceptionBase &e)
+          {
+            throw InputError(one_line(e));
+          }
+        Parameters parameters;
+        parameters.source_file = source;
+        parameters.parse_parameters(prm);
+        return parameters;
+      }
+    } // namespace
+
+
+
+    Parameters
+    Parameters::from_file(const std::string &filename)
+    {
+      if (!std::ifstream(filename))
+        throw InputError("cannot open parameter file '" + filename + "'");
+      return read_parameters(
+        [&](ParameterHandler &prm) { prm.parse_input(filename); }, filename);
+    }
+
+
+
+    Parameters
+    Parameters::from_string(const std::string &text)
+    {
+      return read_parameters(
+        [&](ParameterHandler &prm) { prm.parse_input_from_string(text); },
+        "<string>");
+    }
+  } // namespace parameters
+} // namespace amfrac

@@ -1,0 +1,199 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <amfrac/postprocess/atomic_file.h>
+#include <amfrac/postprocess/field_output.h>
+
+#include <fstream>
+
+namespace amfrac
+{
+  namespace
+  {
+    const char *model_axis_pairs[6] = {"xx", "yy", "zz", "yz", "xz", "xy"};
+    const char *material_axis_names[6] =
+      {"sigma_11", "sigma_22", "sigma_33", "tau_23", "tau_13", "tau_12"};
+    const unsigned int voigt[6][2] =
+      {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
+  } // namespace
+
+
+
+  template <int dim>
+  StressPostprocessor<dim>::StressPostprocessor(
+    const std::vector<PlyProperties<dim>> &plies)
+    : plies(plies)
+  {}
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  StressPostprocessor<dim>::get_names() const
+  {
+    std::vector<std::string> names;
+    for (const char *pair : model_axis_pairs)
+      names.push_back(std::string("strain_") + pair);
+    for (const char *pair : model_axis_pairs)
+      names.push_back(std::string("stress_") + pair);
+    for (const char *name : material_axis_names)
+      names.emplace_back(name);
+    names.emplace_back("hoffman_index");
+    return names;
+  }
+
+
+
+  template <int dim>
+  std::vector<DataComponentInterpretation::DataComponentInterpretation>
+  StressPostprocessor<dim>::get_data_component_interpretation() const
+  {
+    return std::vector<
+      DataComponentInterpretation::DataComponentInterpretation>(
+      get_names().size(), DataComponentInterpretation::component_is_scalar);
+  }
+
+
+
+  template <int dim>
+  UpdateFlags
+  StressPostprocessor<dim>::get_needed_update_flags() const
+  {
+    return update_gradients;
+  }
+
+
+
+  template <int dim>
+  void
+  StressPostprocessor<dim>::evaluate_vector_field(
+    const DataPostprocessorInputs::Vector<dim> &inputs,
+    std::vector<dealii::Vector<double>>        &computed) const
+  {
+    const auto  cell = inputs.template get_cell<dim>();
+    const auto &ply  = plies[cell->material_id()];
+    for (unsigned int q = 0; q < computed.size(); ++q)
+      {
+        Tensor<2, dim> gradient;
+        for (unsigned int d = 0; d < dim; ++d)
+          gradient[d] = inputs.solution_gradients[q][d];
+        const SymmetricTensor<2, dim> strain = symmetrize(gradient);
+        const PlyStress               stress = evaluate_ply_stress(ply, strain);
+        SymmetricTensor<2, 3>         strain_3d;
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = a; b < dim; ++b)
+            strain_3d[a][b] = strain[a][b];
+        for (unsigned int k = 0; k < 6; ++k)
+          {
+            const unsigned int i = voigt[k][0], j = voigt[k][1];
+            computed[q](k)      = strain_3d[i][j];
+            computed[q](6 + k)  = stress.model[i][j];
+            computed[q](12 + k) = stress.material[i][j];
+          }
+        computed[q](18) = stress.hoffman;
+      }
+  }
+
+
+
+  template <int dim>
+  FieldOutput<dim>::FieldOutput(const parameters::Output              &parameters,
+                                const TiedCopyDoFs<dim>               &dofs,
+                                const std::vector<PlyProperties<dim>> &plies)
+    : parameters(parameters)
+    , dofs(dofs)
+    , postprocessor(plies)
+  {}
+
+
+
+  template <int dim>
+  std::string
+  FieldOutput<dim>::path(const std::string &name) const
+  {
+    return parameters.directory + "/" + name;
+  }
+
+
+
+  template <int dim>
+  void
+  FieldOutput<dim>::write(const unsigned int            step,
+                          const double                  time,
+                          const dealii::Vector<double> &copy_values)
+  {
+    const auto    &dof_handler = dofs.copy_handler();
+    const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
+    const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+
+    DataOut<dim> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    data_out.add_data_vector(
+      copy_values,
+      std::vector<std::string>(dim, "displacement"),
+      DataOut<dim>::type_dof_data,
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+        dim, DataComponentInterpretation::component_is_part_of_vector));
+    data_out.add_data_vector(copy_values, postprocessor);
+    dealii::Vector<float> ply(dof_handler.get_triangulation().n_active_cells());
+    dealii::Vector<float> owner(ply.size());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        ply(cell->active_cell_index())   = cell->material_id();
+        owner(cell->active_cell_index()) = cell->subdomain_id();
+      }
+    data_out.add_data_vector(ply, "ply", DataOut<dim>::type_cell_data);
+    data_out.add_data_vector(owner, "mpi_rank", DataOut<dim>::type_cell_data);
+    data_out.build_patches(dofs.get_fe().degree);
+
+    const std::string stem =
+      parameters.base_name + "-" + Utilities::int_to_string(step, 5);
+    if (parameters.write_vtu)
+      {
+        const std::string piece =
+          stem + "." + Utilities::int_to_string(rank, 4) + ".vtu";
+        write_atomically(path(piece),
+                         [&](std::ostream &out) { data_out.write_vtu(out); });
+        MPI_Barrier(comm);
+        if (rank == 0)
+          {
+            std::vector<std::string> pieces;
+            for (unsigned int r = 0; r < n_ranks; ++r)
+              pieces.push_back(stem + "." + Utilities::int_to_string(r, 4) +
+                               ".vtu");
+            write_atomically(path(stem + ".pvtu"), [&](std::ostream &out) {
+              data_out.write_pvtu_record(out, pieces);
+            });
+            pvd_records.emplace_back(time, stem + ".pvtu");
+            write_atomically(path(parameters.base_name + ".pvd"),
+                             [&](std::ostream &out) {
+                               DataOutBase::write_pvd_record(out, pvd_records);
+                             });
+          }
+      }
+    if (parameters.write_xdmf)
+      {
+        DataOutBase::DataOutFilter filter(
+          DataOutBase::DataOutFilterFlags(true, true));
+        data_out.write_filtered_data(filter);
+        const std::string h5 = stem + ".h5";
+        data_out.write_hdf5_parallel(filter, path(h5 + ".tmp"), comm);
+        MPI_Barrier(comm);
+        if (rank == 0)
+          rename_or_throw(path(h5 + ".tmp"), path(h5));
+        xdmf_entries.push_back(
+          data_out.create_xdmf_entry(filter, h5, time, comm));
+        const std::string xdmf = path(parameters.base_name + ".xdmf");
+        data_out.write_xdmf_file(xdmf_entries, xdmf + ".tmp", comm);
+        if (rank == 0)
+          rename_or_throw(xdmf + ".tmp", xdmf);
+      }
+  }
+
+  template class StressPostprocessor<2>;
+  template class StressPostprocessor<3>;
+  template class FieldOutput<2>;
+  template class FieldOutput<3>;
+} // namespace amfrac

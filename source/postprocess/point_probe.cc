@@ -1,0 +1,90 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <amfrac/postprocess/point_probe.h>
+
+#include <sstream>
+#include <stdexcept>
+
+namespace amfrac
+{
+  template <int dim>
+  PointProbe<dim>::PointProbe(const TiedCopyDoFs<dim>               &dofs,
+                              const std::vector<PlyProperties<dim>> &plies,
+                              const std::vector<Point<dim>>         &points)
+    : dofs(dofs)
+    , plies(plies)
+  {
+    const MappingQ1<dim> mapping;
+    for (const Point<dim> &p : points)
+      {
+        try
+          {
+            const auto found = GridTools::find_active_cell_around_point(
+              mapping, dofs.copy_handler(), p);
+            cells.push_back(found.first);
+            unit_points.push_back(
+              GeometryInfo<dim>::project_to_unit_cell(found.second));
+          }
+        catch (...)
+          {
+            std::ostringstream text;
+            text << "point (" << p << ") lies outside the laminate";
+            throw std::invalid_argument(text.str());
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  std::vector<typename PointProbe<dim>::Value>
+  PointProbe<dim>::evaluate(const dealii::Vector<double> &copy_values) const
+  {
+    std::vector<Value> values(cells.size());
+    std::vector<double> flat;
+    for (unsigned int k = 0; k < cells.size(); ++k)
+      {
+        if (cells[k]->is_locally_owned())
+          {
+            FEValues<dim> fe_values(dofs.get_fe(),
+                                    Quadrature<dim>(unit_points[k]),
+                                    update_values | update_gradients);
+            fe_values.reinit(cells[k]);
+            std::vector<Tensor<1, dim>> u(1);
+            std::vector<Tensor<2, dim>> grad(1);
+            const FEValuesExtractors::Vector displacement(0);
+            fe_values[displacement].get_function_values(copy_values, u);
+            fe_values[displacement].get_function_gradients(copy_values, grad);
+            values[k].displacement = u[0];
+            values[k].stress =
+              evaluate_ply_stress(plies[cells[k]->material_id()],
+                                  symmetrize(grad[0]))
+                .model;
+          }
+        for (unsigned int d = 0; d < dim; ++d)
+          flat.push_back(values[k].displacement[d]);
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = i; j < 3; ++j)
+            flat.push_back(values[k].stress[i][j]);
+      }
+    const MPI_Comm comm =
+      dofs.copy_handler().get_triangulation().get_communicator();
+    Utilities::MPI::sum(flat, comm, flat);
+    unsigned int n = 0;
+    for (auto &value : values)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          value.displacement[d] = flat[n++];
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = i; j < 3; ++j)
+            value.stress[i][j] = flat[n++];
+      }
+    return values;
+  }
+
+  template class PointProbe<2>;
+  template class PointProbe<3>;
+} // namespace amfrac

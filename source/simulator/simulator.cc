@@ -1,0 +1,352 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/numerics/vector_tools_integrate_difference.h>
+
+#include <amfrac/parameters/expressions.h>
+#include <amfrac/parameters/input_error.h>
+#include <amfrac/simulator/simulator.h>
+
+#include <filesystem>
+
+namespace amfrac
+{
+  template <int dim>
+  Simulator<dim>::Simulator(const parameters::Parameters &prm,
+                            const MPI_Comm                comm)
+    : parameters(prm)
+    , comm(comm)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+    , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
+    , triangulation(comm)
+    , laminate(prm.geometry, prm.materials)
+    , plies(make_ply_table<dim>(laminate, prm.materials))
+    , dof_layer(triangulation, prm.discretization.degree)
+  {
+    TimerOutput::Scope scope(timer, "setup");
+    make_laminate_mesh(parameters.geometry, laminate, triangulation);
+    dof_layer.distribute();
+    build_loads_and_supports();
+
+    std::vector<Point<dim>> points;
+    for (const Point<3> &p : parameters.output.points)
+      {
+        Point<dim> q;
+        for (unsigned int d = 0; d < dim; ++d)
+          q[d] = p[d];
+        points.push_back(q);
+      }
+    try
+      {
+        probe = std::make_unique<PointProbe<dim>>(dof_layer, plies, points);
+      }
+    catch (const std::invalid_argument &e)
+      {
+        throw InputError("Output/Point values", e.what());
+      }
+    summary = std::make_unique<History>(
+      parameters.output.directory + "/history.csv",
+      Utilities::MPI::this_mpi_process(comm) == 0);
+    if (parameters.output.write_vtu || parameters.output.write_xdmf)
+      field_output =
+        std::make_unique<FieldOutput<dim>>(parameters.output, dof_layer, plies);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::build_loads_and_supports()
+  {
+    const auto &bc        = parameters.boundary_conditions;
+    const auto &constants = bc.constants;
+    const bool  any_body_force =
+      !(bc.body_force.size() == 1 && bc.body_force[0] == "0");
+    if (any_body_force)
+      loads.body_force = make_expression_function<dim>(
+        bc.body_force, dim, constants, "Boundary conditions/Body force");
+
+    for (unsigned int id = 0; id < 2 * dim; ++id)
+      {
+        const parameters::BoundaryFace &face = bc.faces[id];
+        const std::string path = "Boundary conditions/" + face.name + "/";
+        using Type             = parameters::BoundaryFace::Type;
+        if (face.type == Type::traction)
+          loads.tractions[id] = make_expression_function<dim>(
+            face.traction, dim, constants, path + "Traction");
+        else if (face.type == Type::pressure)
+          loads.pressures[id] = make_expression_function<dim>(
+            {face.pressure}, 1, constants, path + "Pressure");
+        else if (face.type == Type::displacement)
+          {
+            PrescribedDisplacement<dim> condition;
+            condition.name        = face.name;
+            condition.boundary_id = id;
+            condition.value       = make_expression_function<dim>(
+              face.displacement, dim, constants, path + "Displacement");
+            for (unsigned int d = 0; d < dim; ++d)
+              condition.components[d] = face.components[d];
+            if (!face.where.empty())
+              condition.where = make_expression_function<dim>(
+                {face.where}, 1, constants, path + "Where");
+            prescribed.push_back(condition);
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::set_body_force(const std::shared_ptr<Function<dim>> &force)
+  {
+    loads.body_force = force;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::set_prescribed_displacements(
+    const std::vector<PrescribedDisplacement<dim>> &conditions)
+  {
+    prescribed = conditions;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::make_constraints(const double t)
+  {
+    // Every rank scans all boundary cells of the (replicated) mesh, so that
+    // a dof is constrained consistently whichever rank sees it.
+    constraints.clear();
+    constraints.reinit(dof_layer.locally_relevant_dofs());
+    supported_dofs.assign(prescribed.size(), {});
+    const auto &fe = dof_layer.get_fe();
+    std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+    std::vector<bool> visited(dof_layer.n_dofs(), false);
+    for (unsigned int k = 0; k < prescribed.size(); ++k)
+      {
+        const auto &condition = prescribed[k];
+        condition.value->set_time(t);
+        std::fill(visited.begin(), visited.end(), false);
+        for (const auto &cell : dof_layer.copy_handler().active_cell_iterators())
+          for (const unsigned int f : cell->face_indices())
+            {
+              if (!cell->at_boundary(f) ||
+                  cell->face(f)->boundary_id() != condition.boundary_id)
+                continue;
+              dof_layer.get_dof_indices(cell, indices);
+              for (const unsigned int i : dof_layer.dofs_on_face(f))
+                {
+                  const auto         dof = indices[i];
+                  const unsigned int c   = dof_layer.component(dof);
+                  if (visited[dof] || !condition.components[c])
+                    continue;
+                  visited[dof]         = true;
+                  const Point<dim> &p = dof_layer.support_point(dof);
+                  if (condition.where && condition.where->value(p) == 0.)
+                    continue;
+                  if (dof_layer.locally_owned_dofs().is_element(dof))
+                    supported_dofs[k].push_back(dof);
+                  if (!dof_layer.locally_relevant_dofs().is_element(dof) ||
+                      constraints.is_constrained(dof))
+                    continue;
+                  constraints.add_line(dof);
+                  constraints.set_inhomogeneity(dof,
+                                                condition.value->value(p, c));
+                }
+            }
+      }
+    constraints.close();
+  }
+
+
+
+  template <int dim>
+  std::vector<std::vector<double>>
+  Simulator<dim>::rigid_body_modes() const
+  {
+    const unsigned int n_modes = dim == 3 ? 6 : 3;
+    const IndexSet    &owned   = dof_layer.locally_owned_dofs();
+    std::vector<std::vector<double>> modes(
+      n_modes, std::vector<double>(owned.n_elements(), 0.));
+    unsigned int local = 0;
+    for (const auto i : owned)
+      {
+        const Point<dim>  &p = dof_layer.support_point(i);
+        const unsigned int c = dof_layer.component(i);
+        modes[c][local]      = 1;
+        if (dim == 2)
+          modes[2][local] = (c == 0 ? -p[1] : p[0]);
+        else
+          {
+            // Rotations about x, y and z.
+            modes[3][local] = (c == 1 ? -p[dim - 1] : c == 2 ? p[1] : 0.);
+            modes[4][local] = (c == 0 ? p[dim - 1] : c == 2 ? -p[0] : 0.);
+            modes[5][local] = (c == 0 ? -p[1] : c == 1 ? p[0] : 0.);
+          }
+        ++local;
+      }
+    return modes;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::prepare_output_directory() const
+  {
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::error_code error;
+        std::filesystem::create_directories(parameters.output.directory,
+                                            error);
+        if (error)
+          throw InputError("Output/Directory",
+                           "cannot create '" + parameters.output.directory +
+                             "': " + error.message());
+      }
+    MPI_Barrier(comm);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::run()
+  {
+    pcout << "amfrac: " << dim << "D, " << laminate.n_plies() << " plies, "
+          << triangulation.n_active_cells() << " cells, "
+          << dof_layer.n_dofs() << " unknowns (" << dof_layer.n_copies()
+          << " node copies), Q" << dof_layer.get_fe().degree << ", "
+          << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)"
+          << std::endl;
+    prepare_output_directory();
+
+    const ElasticAssembler<dim> assembler(dof_layer, plies);
+    LinearSolver                solver(parameters.linear_solver);
+    solution.reinit(dof_layer.locally_owned_dofs(), comm);
+    system_rhs.reinit(dof_layer.locally_owned_dofs(), comm);
+    relevant_solution.reinit(dof_layer.locally_owned_dofs(),
+                             dof_layer.locally_relevant_dofs(),
+                             comm);
+
+    const unsigned int n_steps = parameters.time.n_steps;
+    const double       dt      = parameters.time.end_time / n_steps;
+    for (unsigned int step = 1; step <= n_steps; ++step)
+      {
+        const double t = step * dt;
+        {
+          TimerOutput::Scope scope(timer, "constraints");
+          make_constraints(t);
+        }
+        if (step == 1)
+          {
+            // The condensed matrix depends on which dofs are constrained,
+            // not on the prescribed values: assemble and factorize once.
+            {
+              TimerOutput::Scope scope(timer, "assemble matrix");
+              assembler.reinit_matrix(constraints, system_matrix);
+              assembler.assemble_matrix(constraints, system_matrix);
+            }
+            TimerOutput::Scope scope(timer, "solver setup");
+            const double seconds =
+              solver.initialize(system_matrix, rigid_body_modes(), dim);
+            pcout << "  " << solver.name() << " set up in " << seconds
+                  << " s" << std::endl;
+          }
+        {
+          TimerOutput::Scope scope(timer, "assemble rhs");
+          assembler.assemble_rhs(loads, t, constraints, system_rhs);
+        }
+        {
+          TimerOutput::Scope scope(timer, "solve");
+          const auto report = solver.solve(solution, system_rhs);
+          constraints.distribute(solution);
+          relevant_solution = solution;
+          pcout << "  step " << step << " t=" << t << ": "
+                << report.iterations << " iteration(s), " << report.seconds
+                << " s" << std::endl;
+        }
+        postprocess(step, t);
+      }
+    timer.print_wall_time_statistics(comm);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::postprocess(const unsigned int step, const double t)
+  {
+    TimerOutput::Scope scope(timer, "postprocess");
+    dof_layer.expand(relevant_solution, copy_values);
+
+    const ElasticAssembler<dim> assembler(dof_layer, plies);
+    Vector residual;
+    residual.reinit(dof_layer.locally_owned_dofs(),
+                    dof_layer.locally_relevant_dofs(),
+                    comm,
+                    /*vector_writable=*/true);
+    const auto energies =
+      assembler.compute_residual(loads, t, relevant_solution, residual);
+
+    std::vector<std::pair<std::string, double>> row = {
+      {"step", step},
+      {"time", t},
+      {"strain_energy", energies.strain_energy},
+      {"load_work", energies.load_work}};
+    const char *axis = "xyz";
+    for (unsigned int k = 0; k < prescribed.size(); ++k)
+      {
+        std::array<double, dim> force{};
+        for (const auto i : supported_dofs[k])
+          force[dof_layer.component(i)] += residual(i);
+        for (unsigned int d = 0; d < dim; ++d)
+          if (prescribed[k].components[d])
+            row.emplace_back("reaction_" + prescribed[k].name + "_" + axis[d],
+                             Utilities::MPI::sum(force[d], comm));
+      }
+    const auto values = probe->evaluate(copy_values);
+    const char *pairs[6] = {"xx", "yy", "zz", "yz", "xz", "xy"};
+    const unsigned int voigt[6][2] = {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
+    for (unsigned int p = 0; p < values.size(); ++p)
+      {
+        const std::string prefix = "p" + std::to_string(p) + "_";
+        for (unsigned int d = 0; d < dim; ++d)
+          row.emplace_back(prefix + "u" + axis[d], values[p].displacement[d]);
+        for (unsigned int k = 0; k < 6; ++k)
+          row.emplace_back(prefix + "stress_" + pairs[k],
+                           values[p].stress[voigt[k][0]][voigt[k][1]]);
+      }
+    summary->add_row(row);
+
+    if (field_output && (step % parameters.output.every_n_steps == 0 ||
+                         step == parameters.time.n_steps))
+      field_output->write(step, t, copy_values);
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::compute_error(const Function<dim>          &exact,
+                                const VectorTools::NormType norm) const
+  {
+    dealii::Vector<float> cellwise(triangulation.n_active_cells());
+    VectorTools::integrate_difference(MappingQ1<dim>(),
+                                      dof_layer.copy_handler(),
+                                      copy_values,
+                                      exact,
+                                      cellwise,
+                                      QGauss<dim>(dof_layer.get_fe().degree + 3),
+                                      norm);
+    return VectorTools::compute_global_error(triangulation, cellwise, norm);
+  }
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace amfrac

@@ -1,0 +1,110 @@
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/solver_cg.h>
+
+#include <amfrac/solvers/linear_solver.h>
+
+#include <ml_MultiLevelPreconditioner.h>
+
+namespace amfrac
+{
+  LinearSolver::LinearSolver(const parameters::LinearSolver &parameters)
+    : parameters(parameters)
+  {}
+
+
+
+  std::string
+  LinearSolver::name() const
+  {
+    if (parameters.type == parameters::LinearSolver::Type::direct)
+      return "direct (Amesos " + parameters.direct_package + ")";
+    return "CG + ML AMG (" + parameters.smoother_type + ")";
+  }
+
+
+
+  double
+  LinearSolver::initialize(
+    const Matrix                           &system_matrix,
+    const std::vector<std::vector<double>> &near_null_space,
+    const unsigned int                      n_pde_equations)
+  {
+    Timer timer;
+    matrix = &system_matrix;
+    if (parameters.type == parameters::LinearSolver::Type::direct)
+      {
+        TrilinosWrappers::SolverDirect::AdditionalData data(
+          false,
+          parameters.direct_package == "mumps" ? "Amesos_Mumps" :
+                                                 "Amesos_Klu");
+        direct =
+          std::make_unique<TrilinosWrappers::SolverDirect>(direct_control,
+                                                           data);
+        direct->initialize(system_matrix);
+        return timer.wall_time();
+      }
+
+    // ML smoothed aggregation; the null space is handed over directly since
+    // deal.II's AdditionalData only takes constant modes.
+    Teuchos::ParameterList ml;
+    ML_Epetra::SetDefaults("SA", ml);
+    ml.set("ML output", 0);
+    ml.set("PDE equations", static_cast<int>(n_pde_equations));
+    ml.set("aggregation: threshold", parameters.aggregation_threshold);
+    ml.set("smoother: sweeps", static_cast<int>(parameters.smoother_sweeps));
+    ml.set("smoother: type", parameters.smoother_type == "ILU" ? "IFPACK" :
+                                                                 parameters.smoother_type);
+    if (parameters.smoother_type == "ILU")
+      ml.set("smoother: ifpack type", "ILU");
+    ml.set("coarse: type", "Amesos-KLU");
+    ml.set("coarse: max size", 2000);
+    const std::size_t n_owned = system_matrix.local_size();
+    null_space_storage.assign(n_owned * near_null_space.size(), 0.);
+    for (unsigned int m = 0; m < near_null_space.size(); ++m)
+      std::copy(near_null_space[m].begin(),
+                near_null_space[m].end(),
+                null_space_storage.begin() + m * n_owned);
+    ml.set("null space: type", "pre-computed");
+    ml.set("null space: dimension", static_cast<int>(near_null_space.size()));
+    ml.set("null space: vectors", null_space_storage.data());
+    amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+    amg->initialize(system_matrix.trilinos_matrix(), ml);
+    return timer.wall_time();
+  }
+
+
+
+  LinearSolver::Report
+  LinearSolver::solve(Vector &x, const Vector &b)
+  {
+    Timer  timer;
+    Report report;
+    if (direct)
+      {
+        direct->solve(x, b);
+        report.iterations = 1;
+      }
+    else
+      {
+        SolverControl control(parameters.max_iterations,
+                              parameters.tolerance * b.l2_norm());
+        SolverCG<Vector> cg(control);
+        try
+          {
+            cg.solve(*matrix, x, b, *amg);
+          }
+        catch (const SolverControl::NoConvergence &e)
+          {
+            throw std::runtime_error(
+              "linear solver (CG + AMG) did not converge in " +
+              std::to_string(e.last_step) + " iterations: residual " +
+              std::to_string(e.last_residual) + " against the target " +
+              std::to_string(control.tolerance()) +
+              " (raise Linear solver/Max iterations or use Solver = direct)");
+          }
+        report.iterations = control.last_step();
+      }
+    report.seconds = timer.wall_time();
+    return report;
+  }
+} // namespace amfrac
