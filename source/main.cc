@@ -5,7 +5,9 @@
 #include <amfrac/parameters/parameters.h>
 #include <amfrac/simulator/simulator.h>
 
+#include <cctype>
 #include <iostream>
+#include <sstream>
 #include <string>
 
 namespace
@@ -30,12 +32,18 @@ namespace
     prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
   }
 
-  /** One line on rank 0, non-zero exit status. */
+  /** One line on rank 0 (white space folded), non-zero exit status. */
   int
   fail(const std::string &message, const bool is_root)
   {
+    std::string line;
+    for (const char c : message)
+      if (!std::isspace(static_cast<unsigned char>(c)))
+        line += c;
+      else if (!line.empty() && line.back() != ' ')
+        line += ' ';
     if (is_root)
-      std::cerr << "amfrac: error: " << message << std::endl;
+      std::cerr << "amfrac: error: " << line << std::endl;
     return 1;
   }
 } // namespace
@@ -90,7 +98,11 @@ main(int argc, char *argv[])
     }
   catch (const amfrac::InputError &e)
     {
-      return fail(std::string(e.what()) + " [in " + file + "]", is_root);
+      const std::string message = e.what();
+      return fail(message.find(file) == std::string::npos ?
+                    message + " [in " + file + "]" :
+                    message,
+                  is_root);
     }
   catch (const dealii::ExceptionBase &e)
     {

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <map>
+#include <iostream>
 #include <sstream>
 
 namespace amfrac
@@ -78,9 +79,22 @@ namespace amfrac
           all,
           parse_constants(constants, "Boundary conditions/Function constants"),
           true);
-        // muparser compiles lazily: evaluate once to reject bad input now.
+        // muparser compiles lazily: evaluate once to reject bad input now,
+        // with std::cerr muted because deal.II prints muparser's own report
+        // there before throwing; ours names the parameter.
         dealii::Vector<double> probe(n_components);
-        function->vector_value(Point<dim>(), probe);
+        std::ostringstream     muted;
+        std::streambuf        *saved = std::cerr.rdbuf(muted.rdbuf());
+        try
+          {
+            function->vector_value(Point<dim>(), probe);
+          }
+        catch (...)
+          {
+            std::cerr.rdbuf(saved);
+            throw;
+          }
+        std::cerr.rdbuf(saved);
       }
     catch (const InputError &)
       {

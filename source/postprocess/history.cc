@@ -14,6 +14,17 @@ namespace amfrac
 
 
 
+  double
+  History::value(const std::size_t row, const std::string &column) const
+  {
+    for (unsigned int c = 0; c < columns.size(); ++c)
+      if (columns[c] == column)
+        return values.at(row)[c];
+    throw std::invalid_argument("History: no column '" + column + "'");
+  }
+
+
+
   void
   History::add_row(const std::vector<std::pair<std::string, double>> &row)
   {

@@ -20,20 +20,25 @@ namespace amfrac
     const MappingQ1<dim> mapping;
     for (const Point<dim> &p : points)
       {
+        std::pair<typename TiedCopyDoFs<dim>::CellIterator, Point<dim>> found;
         try
           {
-            const auto found = GridTools::find_active_cell_around_point(
+            found = GridTools::find_active_cell_around_point(
               mapping, dofs.copy_handler(), p);
-            cells.push_back(found.first);
-            unit_points.push_back(
-              GeometryInfo<dim>::project_to_unit_cell(found.second));
           }
         catch (...)
+          {
+            found.first = dofs.copy_handler().end();
+          }
+        if (found.first.state() != IteratorState::valid)
           {
             std::ostringstream text;
             text << "point (" << p << ") lies outside the laminate";
             throw std::invalid_argument(text.str());
           }
+        cells.push_back(found.first);
+        unit_points.push_back(
+          GeometryInfo<dim>::project_to_unit_cell(found.second));
       }
   }
 

@@ -17,7 +17,7 @@ namespace amfrac
     : parameters(prm)
     , comm(comm)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
-    , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
+    , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     , triangulation(comm)
     , laminate(prm.geometry, prm.materials)
     , plies(make_ply_table<dim>(laminate, prm.materials))

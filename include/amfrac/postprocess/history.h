@@ -27,6 +27,10 @@ namespace amfrac
       return values;
     }
 
+    /** The value of @p column in row @p row; throws for unknown names. */
+    double
+    value(const std::size_t row, const std::string &column) const;
+
   private:
     const std::string                filename;
     const bool                       is_writer;

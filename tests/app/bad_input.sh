@@ -1,0 +1,127 @@
+#!/bin/bash
+# Bad input: every case must end with exactly one line on stderr that names
+# the parameter (or the file) and contains the expected text, a non-zero
+# exit status, and no output directory.
+# usage: bad_input.sh AMFRAC WORKDIR
+set -u
+amfrac=$1 work=$2
+rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
+failures=0
+
+# A valid small scene; each case appends or replaces lines.
+base='set Dimension = 3
+subsection Geometry
+  set Stacking sequence = [0/90]s
+  set Elements along length = 2
+  set Elements along width = 2
+end
+subsection Output
+  set Directory = out
+end'
+
+# expect NAME EXPECTED-TEXT PRM-TEXT
+expect() {
+  local name=$1 expected=$2 text=$3
+  printf '%s\n' "$text" > "$name.prm"
+  "$amfrac" "$name.prm" > "$name.stdout" 2> "$name.stderr"
+  local status=$? lines
+  lines=$(wc -l < "$name.stderr")
+  if [ $status -eq 0 ] || [ "$lines" -ne 1 ] || ! grep -qF -- "$expected" "$name.stderr" || [ -e out ]; then
+    echo "FAIL $name: status $status, $lines stderr line(s), output dir $( [ -e out ] && echo created || echo absent ); expected '$expected' in:"
+    cat "$name.stderr"
+    failures=$((failures + 1))
+  else
+    echo "ok   $name: $(cat "$name.stderr")"
+  fi
+  rm -rf out
+}
+
+with() { # replace the line matching $1 in the base scene by $2
+  printf '%s\n' "$base" | sed "s|$1|$2|"
+}
+
+expect unknown_section "Geometri" "$base
+subsection Geometri
+  set Length = 3
+end"
+expect unknown_entry "Lenght" "$(with 'set Elements along width = 2' 'set Lenght = 2')"
+expect malformed_value "Length" "$(with 'set Elements along width = 2' 'set Length = abc')"
+expect malformed_stacking "Geometry/Stacking sequence" "$(with '\[0/90\]s' '[0/90')"
+expect bad_repeat "Geometry/Stacking sequence" "$(with '\[0/90\]s' '[0_0/90]')"
+expect zero_thickness "Geometry/Ply thickness" "$(with 'set Elements along width = 2' 'set Ply thickness = 0')"
+expect ply_count "Geometry/Ply thickness" "$(with 'set Elements along width = 2' 'set Ply thickness = 0.1, 0.2')"
+expect zero_subdivisions "Elements per ply" "$(with 'set Elements along width = 2' 'set Elements per ply = 0')"
+expect negative_length "Geometry/Length" "$(with 'set Elements along width = 2' 'set Length = -1')"
+expect not_positive_definite "positive definite" "$base
+subsection Materials
+  set nu12 = 3.5
+end"
+expect negative_modulus "E2" "$base
+subsection Materials
+  set E2 = -10
+end"
+expect negative_strength "Materials/Yt" "$base
+subsection Materials
+  set Yt = 0
+end"
+expect unknown_material "unknown material 'glass'" "$(with '\[0/90\]s' '[0@glass/90]')"
+expect face_not_in_2d "Boundary conditions/z-/Type" "$(with 'set Dimension = 3' 'set Dimension = 2')
+subsection Boundary conditions
+  subsection z-
+    set Type = displacement
+  end
+end"
+expect unknown_face "x0" "$base
+subsection Boundary conditions
+  subsection x0
+    set Type = displacement
+  end
+end"
+expect bad_expression "Boundary conditions/z+/Traction" "$base
+subsection Boundary conditions
+  subsection z+
+    set Type = traction
+    set Traction = 0; 0; sin(x
+  end
+end"
+expect wrong_component_count "Boundary conditions/x-/Displacement" "$base
+subsection Boundary conditions
+  subsection x-
+    set Type = displacement
+    set Displacement = 0; 0
+  end
+end"
+expect point_outside "Output/Point values" "$base
+subsection Output
+  set Point values = 100, 100, 100
+end"
+expect bad_type "Type" "$base
+subsection Boundary conditions
+  subsection x-
+    set Type = glue
+  end
+end"
+
+# A missing file and an unknown option.
+"$amfrac" no_such_file.prm > /dev/null 2> missing.stderr
+status=$?
+if [ $status -eq 0 ] || ! grep -q "cannot open parameter file 'no_such_file.prm'" missing.stderr; then
+  echo "FAIL missing_file"; cat missing.stderr; failures=$((failures + 1))
+else echo "ok   missing_file: $(cat missing.stderr)"; fi
+"$amfrac" --frobnicate > /dev/null 2> option.stderr
+status=$?
+if [ $status -eq 0 ] || ! grep -q "unknown option" option.stderr; then
+  echo "FAIL unknown_option"; failures=$((failures + 1))
+else echo "ok   unknown_option"; fi
+
+# An existing output folder is left intact by a rejected run.
+mkdir -p out && echo keep > out/history.csv
+printf '%s\n' "$(with '\[0/90\]s' '[0/90')" > keep.prm
+"$amfrac" keep.prm > /dev/null 2>&1
+if [ "$(cat out/history.csv)" != keep ]; then
+  echo "FAIL a rejected run touched existing output"; failures=$((failures + 1))
+fi
+rm -rf out
+
+echo "$failures failure(s)"
+[ $failures -eq 0 ]

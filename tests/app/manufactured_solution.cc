@@ -1,0 +1,176 @@
+// Manufactured solution for a rotated orthotropic ply (30 degrees): a
+// smooth non-polynomial displacement u_k = sin(a_k . x + phi_k), the body
+// force f = -div(C : eps(u)) and Dirichlet data from u on all faces. The
+// L2 and H1 errors must converge at rates p+1 and p (within 0.1) for Q1 and
+// Q2; the ConvergenceTable is printed and compared with numdiff against
+// the stored regression values.
+#include <deal.II/base/convergence_table.h>
+#include <deal.II/base/function.h>
+#include <deal.II/base/mpi.h>
+
+#include <amfrac/parameters/parameters.h>
+#include <amfrac/simulator/simulator.h>
+
+#include "../check.h"
+
+#include <fstream>
+
+using namespace amfrac;
+
+namespace
+{
+  const double wave[3][3] = {{1.1, 0.7, 0.9}, {0.6, 1.3, 0.8}, {0.9, 0.5, 1.2}};
+  const double phase[3]   = {0.3, 1.1, 0.7};
+
+  double
+  argument(const Point<3> &p, const unsigned int k)
+  {
+    return wave[k][0] * p[0] + wave[k][1] * p[1] + wave[k][2] * p[2] +
+           phase[k];
+  }
+
+  class Exact : public Function<3>
+  {
+  public:
+    Exact()
+      : Function<3>(3)
+    {}
+
+    double
+    value(const Point<3> &p, const unsigned int k) const override
+    {
+      return std::sin(argument(p, k));
+    }
+
+    Tensor<1, 3>
+    gradient(const Point<3> &p, const unsigned int k) const override
+    {
+      Tensor<1, 3> g;
+      for (unsigned int d = 0; d < 3; ++d)
+        g[d] = wave[k][d] * std::cos(argument(p, k));
+      return g;
+    }
+  };
+
+  /** f_i = -C_ijkl d_j d_l u_k = sum C_ijkl a^k_j a^k_l sin(a^k . x). */
+  class BodyForce : public Function<3>
+  {
+  public:
+    explicit BodyForce(const SymmetricTensor<4, 3> &C)
+      : Function<3>(3)
+      , C(C)
+    {}
+
+    double
+    value(const Point<3> &p, const unsigned int i) const override
+    {
+      double f = 0;
+      for (unsigned int k = 0; k < 3; ++k)
+        for (unsigned int j = 0; j < 3; ++j)
+          for (unsigned int l = 0; l < 3; ++l)
+            f += C[i][j][k][l] * wave[k][j] * wave[k][l] *
+                 std::sin(argument(p, k));
+      return f;
+    }
+
+  private:
+    const SymmetricTensor<4, 3> C;
+  };
+
+  const char *scene = R"(
+set Dimension = 3
+subsection Geometry
+  set Stacking sequence     = [30]
+  set Total thickness       = 1
+  set Length                = 1
+  set Width                 = 1
+  set Elements along length = @N@
+  set Elements along width  = @N@
+  set Elements per ply      = @N@
+end
+subsection Discretization
+  set Finite element degree = @DEGREE@
+end
+subsection Output
+  set Field format = none
+  set Directory    = manufactured_output
+end
+)";
+
+  std::string
+  substitute(std::string text, const std::string &key, const std::string &value)
+  {
+    for (std::size_t at = text.find(key); at != std::string::npos;
+         at = text.find(key))
+      text.replace(at, key.size(), value);
+    return text;
+  }
+} // namespace
+
+int
+main(int argc, char *argv[])
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  std::ofstream table_file(argc > 1 ? argv[1] : "manufactured_solution.txt");
+  for (const unsigned int degree : {1u, 2u})
+    {
+      ConvergenceTable    table;
+      std::vector<double> L2, H1;
+      const std::vector<unsigned int> meshes =
+        degree == 1 ? std::vector<unsigned int>{2, 4, 8, 16} :
+                      std::vector<unsigned int>{2, 4, 8};
+      for (const unsigned int n : meshes)
+        {
+          const auto prm = parameters::Parameters::from_string(substitute(
+            substitute(scene, "@N@", std::to_string(n)),
+            "@DEGREE@",
+            std::to_string(degree)));
+          const Laminate laminate(prm.geometry, prm.materials);
+          const auto     plies = make_ply_table<3>(laminate, prm.materials);
+          auto           exact = std::make_shared<Exact>();
+
+          Simulator<3> simulator(prm, MPI_COMM_WORLD);
+          simulator.set_body_force(
+            std::make_shared<BodyForce>(plies[0].stiffness_3d));
+          std::vector<PrescribedDisplacement<3>> supports;
+          for (types::boundary_id id = 0; id < 6; ++id)
+            supports.push_back({"face" + std::to_string(id),
+                                id,
+                                exact,
+                                {{true, true, true}},
+                                nullptr});
+          simulator.set_prescribed_displacements(supports);
+          simulator.run();
+
+          L2.push_back(simulator.compute_error(*exact, VectorTools::L2_norm));
+          H1.push_back(
+            simulator.compute_error(*exact, VectorTools::H1_seminorm));
+          table.add_value("cells", n * n * n);
+          table.add_value("dofs", simulator.dofs().n_dofs());
+          table.add_value("L2", L2.back());
+          table.add_value("H1", H1.back());
+        }
+      table.set_scientific("L2", true);
+      table.set_scientific("H1", true);
+      table.set_precision("L2", 4);
+      table.set_precision("H1", 4);
+      table.evaluate_convergence_rates("L2",
+                                       ConvergenceTable::reduction_rate_log2);
+      table.evaluate_convergence_rates("H1",
+                                       ConvergenceTable::reduction_rate_log2);
+      if (root)
+        {
+          std::cout << "Q" << degree << std::endl;
+          table.write_text(std::cout);
+          table_file << "Q" << degree << std::endl;
+          table.write_text(table_file);
+        }
+
+      // The rate of the finest refinement step: p+1 in L2, p in H1.
+      const std::size_t last = L2.size() - 1;
+      CHECK_CLOSE(std::log2(L2[last - 1] / L2[last]), degree + 1., 0.1);
+      CHECK_CLOSE(std::log2(H1[last - 1] / H1[last]), double(degree), 0.1);
+    }
+  return amfrac_test::summary();
+}
