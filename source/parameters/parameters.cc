@@ -345,9 +345,11 @@ namespace amfrac
           prm.declare_entry("Where",
                             "",
                             Patterns::Anything(),
-                            "Optional condition: the displacement is "
-                            "prescribed only at nodes of this face where the "
-                            "expression is nonzero, e.g. abs(z-1)<1e-6.");
+                            "Optional condition: a component is prescribed "
+                            "only at the nodes of this face where its "
+                            "expression is nonzero, e.g. abs(z-1)<1e-6 (one "
+                            "expression for all components or one per "
+                            "component separated by ';').");
           prm.declare_entry("Traction",
                             "0",
                             Patterns::Anything(),

@@ -88,7 +88,10 @@ namespace amfrac
               condition.components[d] = face.components[d];
             if (!face.where.empty())
               condition.where = make_expression_function<dim>(
-                {face.where}, 1, constants, path + "Where");
+                parameters::split_expressions(face.where),
+                dim,
+                constants,
+                path + "Where");
             prescribed.push_back(condition);
           }
       }
@@ -147,7 +150,7 @@ namespace amfrac
                     continue;
                   visited[dof]         = true;
                   const Point<dim> &p = dof_layer.support_point(dof);
-                  if (condition.where && condition.where->value(p) == 0.)
+                  if (condition.where && condition.where->value(p, c) == 0.)
                     continue;
                   if (dof_layer.locally_owned_dofs().is_element(dof))
                     supported_dofs[k].push_back(dof);

@@ -140,7 +140,7 @@ main(int argc, char *argv[])
       simulator.set_prescribed_displacements(supports);
       simulator.run();
 
-      const ZeroFunction<3> zero(3);
+      const Functions::ZeroFunction<3> zero(3);
       const double          error =
         simulator.compute_error(*exact, VectorTools::L2_norm);
       const double norm = simulator.compute_error(zero, VectorTools::L2_norm);

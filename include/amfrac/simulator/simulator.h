@@ -30,7 +30,8 @@ namespace amfrac
     types::boundary_id             boundary_id;
     std::shared_ptr<Function<dim>> value;
     std::array<bool, dim>          components;
-    /** Optional: only nodes where this is nonzero (nullptr: all). */
+    /** Optional: component c is prescribed only at nodes where component
+     * c of this function is nonzero (nullptr: everywhere on the face). */
     std::shared_ptr<Function<dim>> where;
   };
 

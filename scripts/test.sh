@@ -1,0 +1,9 @@
+#!/bin/bash
+# Set up and build (scripts/setup.sh), then run the default test suite.
+# Benchmarks (label "benchmark") are not part of it: ctest -L benchmark.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+cd "${BUILD_DIR:-build}"
+ctest -j 2 --output-on-failure -LE benchmark
