@@ -449,6 +449,14 @@ namespace amfrac
                         Patterns::Selection(
                           "Chebyshev|symmetric Gauss-Seidel|ILU"),
                         "ML smoother.");
+      prm.declare_entry("AMG auxiliary aggregation threshold",
+                        "0",
+                        Patterns::Double(0),
+                        "If positive, ML aggregates by the distance "
+                        "Laplacian of the node coordinates with this drop "
+                        "tolerance. On thin plates 0.1 cut CG iterations "
+                        "from 413 to 29 on one mesh but diverged on others: "
+                        "see doc/benchmarks/README.md before using it.");
       prm.declare_entry("AMG aggregation threshold",
                         "1e-4",
                         Patterns::Double(0),
@@ -470,6 +478,8 @@ namespace amfrac
       smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
       smoother_type         = prm.get("AMG smoother type");
       aggregation_threshold = prm.get_double("AMG aggregation threshold");
+      auxiliary_threshold =
+        prm.get_double("AMG auxiliary aggregation threshold");
       prm.leave_subsection();
     }
 

@@ -199,6 +199,21 @@ namespace amfrac
 
 
   template <int dim>
+  std::vector<std::vector<double>>
+  Simulator<dim>::owned_node_coordinates() const
+  {
+    // Owned reduced dofs come node by node, dim components each.
+    std::vector<std::vector<double>> coordinates(dim);
+    for (const auto i : dof_layer.locally_owned_dofs())
+      if (dof_layer.component(i) == 0)
+        for (unsigned int d = 0; d < dim; ++d)
+          coordinates[d].push_back(dof_layer.support_point(i)[d]);
+    return coordinates;
+  }
+
+
+
+  template <int dim>
   void
   Simulator<dim>::prepare_output_directory() const
   {
@@ -256,8 +271,10 @@ namespace amfrac
               assembler.assemble_matrix(constraints, system_matrix);
             }
             TimerOutput::Scope scope(timer, "solver setup");
-            const double seconds =
-              solver.initialize(system_matrix, rigid_body_modes(), dim);
+            const double seconds = solver.initialize(system_matrix,
+                                                     rigid_body_modes(),
+                                                     dim,
+                                                     owned_node_coordinates());
             pcout << "  " << solver.name() << " set up in " << seconds
                   << " s" << std::endl;
           }

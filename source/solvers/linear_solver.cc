@@ -5,6 +5,8 @@
 
 #include <ml_MultiLevelPreconditioner.h>
 
+#include <sstream>
+
 namespace amfrac
 {
   LinearSolver::LinearSolver(const parameters::LinearSolver &parameters)
@@ -27,7 +29,8 @@ namespace amfrac
   LinearSolver::initialize(
     const Matrix                           &system_matrix,
     const std::vector<std::vector<double>> &near_null_space,
-    const unsigned int                      n_pde_equations)
+    const unsigned int                      n_pde_equations,
+    const std::vector<std::vector<double>> &node_coordinates)
   {
     Timer timer;
     matrix = &system_matrix;
@@ -52,10 +55,23 @@ namespace amfrac
     ml.set("PDE equations", static_cast<int>(n_pde_equations));
     ml.set("aggregation: threshold", parameters.aggregation_threshold);
     ml.set("smoother: sweeps", static_cast<int>(parameters.smoother_sweeps));
-    ml.set("smoother: type", parameters.smoother_type == "ILU" ? "IFPACK" :
-                                                                 parameters.smoother_type);
+    ml.set("smoother: type",
+           parameters.smoother_type == "ILU" ? "IFPACK" :
+                                               parameters.smoother_type);
     if (parameters.smoother_type == "ILU")
       ml.set("smoother: ifpack type", "ILU");
+    // Thin plies make elements much wider than thick; ML's auxiliary
+    // aggregation (by the distance Laplacian) needs the node coordinates.
+    coordinates = node_coordinates;
+    const char *axis_names[3] = {"x-coordinates", "y-coordinates",
+                                 "z-coordinates"};
+    for (unsigned int d = 0; d < coordinates.size(); ++d)
+      ml.set(axis_names[d], coordinates[d].data());
+    if (parameters.auxiliary_threshold > 0)
+      {
+        ml.set("aggregation: aux: enable", true);
+        ml.set("aggregation: aux: threshold", parameters.auxiliary_threshold);
+      }
     ml.set("coarse: type", "Amesos-KLU");
     ml.set("coarse: max size", 2000);
     const std::size_t n_owned = system_matrix.local_size();
@@ -95,12 +111,14 @@ namespace amfrac
           }
         catch (const SolverControl::NoConvergence &e)
           {
-            throw std::runtime_error(
-              "linear solver (CG + AMG) did not converge in " +
-              std::to_string(e.last_step) + " iterations: residual " +
-              std::to_string(e.last_residual) + " against the target " +
-              std::to_string(control.tolerance()) +
-              " (raise Linear solver/Max iterations or use Solver = direct)");
+            std::ostringstream message;
+            message << "linear solver (CG + AMG) did not converge in "
+                    << e.last_step << " iterations: residual "
+                    << e.last_residual << " against the target "
+                    << control.tolerance()
+                    << " (raise Linear solver/Max iterations or use Solver "
+                       "= direct)";
+            throw std::runtime_error(message.str());
           }
         report.iterations = control.last_step();
       }

@@ -112,6 +112,7 @@ namespace amfrac
       unsigned int max_iterations;
       unsigned int smoother_sweeps;
       double       aggregation_threshold;
+      double       auxiliary_threshold;
       std::string  smoother_type;
 
       static void

@@ -117,6 +117,8 @@ namespace amfrac
     make_constraints(const double t);
     std::vector<std::vector<double>>
     rigid_body_modes() const;
+    std::vector<std::vector<double>>
+    owned_node_coordinates() const;
     void
     postprocess(const unsigned int step, const double t);
     void

@@ -32,12 +32,15 @@ namespace amfrac
     /**
      * Factorize @p matrix, or build the AMG hierarchy from it and from
      * @p near_null_space: one vector per mode, each holding the locally
-     * owned rows. Returns the wall time it took.
+     * owned rows. @p node_coordinates (one array per axis, one entry per
+     * owned node) serve the auxiliary aggregation
+     * that thin laminates need. Returns the wall time it took.
      */
     double
     initialize(const Matrix                            &matrix,
                const std::vector<std::vector<double>> &near_null_space,
-               const unsigned int                       n_pde_equations);
+               const unsigned int                       n_pde_equations,
+               const std::vector<std::vector<double>> &node_coordinates);
 
     struct Report
     {
@@ -59,6 +62,7 @@ namespace amfrac
     std::unique_ptr<TrilinosWrappers::SolverDirect>  direct;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
     std::vector<double>                              null_space_storage;
+    std::vector<std::vector<double>>                 coordinates;
     SolverControl                                    direct_control;
   };
 } // namespace amfrac
