@@ -242,6 +242,11 @@ namespace amfrac
           << " node copies), Q" << dof_layer.get_fe().degree << ", "
           << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)"
           << std::endl;
+    if (prescribed.empty())
+      throw InputError("Boundary conditions",
+                       "no face has Type = displacement, so the laminate "
+                       "can move as a rigid body: prescribe displacements "
+                       "on at least one face");
     prepare_output_directory();
 
     const ElasticAssembler<dim> assembler(dof_layer, plies);

@@ -1,7 +1,7 @@
 #!/bin/bash
 # Bad input: every case must end with exactly one line on stderr that names
-# the parameter (or the file) and contains the expected text, a non-zero
-# exit status, and no output directory.
+# the parameter (or the file, or the cause) and contains the expected text,
+# a non-zero exit status, and no output file.
 # usage: bad_input.sh AMFRAC WORKDIR
 set -u
 amfrac=$1 work=$2
@@ -26,8 +26,11 @@ expect() {
   "$amfrac" "$name.prm" > "$name.stdout" 2> "$name.stderr"
   local status=$? lines
   lines=$(wc -l < "$name.stderr")
-  if [ $status -eq 0 ] || [ "$lines" -ne 1 ] || ! grep -qF -- "$expected" "$name.stderr" || [ -e out ]; then
-    echo "FAIL $name: status $status, $lines stderr line(s), output dir $( [ -e out ] && echo created || echo absent ); expected '$expected' in:"
+  # Input errors stop before the output folder exists; a singular solve
+  # stops before any file is written into it.
+  written=$(find out -type f 2>/dev/null | head -1)
+  if [ $status -eq 0 ] || [ "$lines" -ne 1 ] || ! grep -qF -- "$expected" "$name.stderr" || [ -n "$written" ]; then
+    echo "FAIL $name: status $status, $lines stderr line(s), written: '$written'; expected '$expected' in:"
     cat "$name.stderr"
     failures=$((failures + 1))
   else
@@ -99,6 +102,19 @@ expect bad_type "Type" "$base
 subsection Boundary conditions
   subsection x-
     set Type = glue
+  end
+end"
+
+expect no_support "no face has Type = displacement" "$base"
+expect singular "singular" "$base
+subsection Boundary conditions
+  subsection x-
+    set Type = displacement
+    set Components = z
+  end
+  subsection x+
+    set Type = traction
+    set Traction = 1; 0; 0
   end
 end"
 

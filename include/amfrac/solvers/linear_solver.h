@@ -10,6 +10,9 @@
 #include <memory>
 #include <vector>
 
+class Amesos_BaseSolver;
+class Epetra_LinearProblem;
+
 namespace amfrac
 {
   using namespace dealii;
@@ -28,6 +31,7 @@ namespace amfrac
     using Vector = TrilinosWrappers::MPI::Vector;
 
     explicit LinearSolver(const parameters::LinearSolver &parameters);
+    ~LinearSolver();
 
     /**
      * Factorize @p matrix, or build the AMG hierarchy from it and from
@@ -59,10 +63,10 @@ namespace amfrac
   private:
     const parameters::LinearSolver                   parameters;
     const Matrix                                    *matrix = nullptr;
-    std::unique_ptr<TrilinosWrappers::SolverDirect>  direct;
+    std::unique_ptr<Epetra_LinearProblem>            direct_problem;
+    std::unique_ptr<Amesos_BaseSolver>               direct;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
     std::vector<double>                              null_space_storage;
     std::vector<std::vector<double>>                 coordinates;
-    SolverControl                                    direct_control;
   };
 } // namespace amfrac
