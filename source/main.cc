@@ -1,28 +1,26 @@
-#include <deal.II/base/mpi.h>
-#include <deal.II/base/parameter_handler.h>
-
 #include <amfrac/parameters/input_error.h>
 #include <amfrac/parameters/parameters.h>
 #include <amfrac/simulator/simulator.h>
-
 #include <cctype>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
 #include <iostream>
 #include <sstream>
 #include <string>
 
 namespace
 {
-  const char *usage =
-    "usage: amfrac [options] FILE.prm\n"
-    "       mpirun -np N amfrac FILE.prm\n"
-    "\n"
-    "Adaptive Multi-FRActure analysis of Composites: runs the scene that\n"
-    "FILE.prm describes and writes its output to Output/Directory.\n"
-    "\n"
-    "options:\n"
-    "  -h, --help              this text\n"
-    "  -p, --print-parameters  every parameter with its default, pattern\n"
-    "                          and documentation (units in brackets)\n";
+  const char *usage
+    = "usage: amfrac [options] FILE.prm\n"
+      "       mpirun -np N amfrac FILE.prm\n"
+      "\n"
+      "Adaptive Multi-FRActure analysis of Composites: runs the scene that\n"
+      "FILE.prm describes and writes its output to Output/Directory.\n"
+      "\n"
+      "options:\n"
+      "  -h, --help              this text\n"
+      "  -p, --print-parameters  every parameter with its default, pattern\n"
+      "                          and documentation (units in brackets)\n";
 
   void
   print_parameters()
@@ -54,8 +52,8 @@ int
 main(int argc, char *argv[])
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const MPI_Comm comm    = MPI_COMM_WORLD;
-  const bool     is_root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+  const MPI_Comm                           comm = MPI_COMM_WORLD;
+  const bool is_root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
   dealii::deal_II_exceptions::disable_abort_on_exception();
 
   std::string file;

@@ -12,8 +12,10 @@ namespace amfrac_test
   inline int failures = 0;
 
   inline void
-  check(const bool condition, const std::string &what, const char *file,
-        const int line)
+  check(const bool         condition,
+        const std::string &what,
+        const char        *file,
+        const int          line)
   {
     if (!condition)
       {
@@ -24,8 +26,12 @@ namespace amfrac_test
   }
 
   inline void
-  check_close(const double value, const double expected, const double tol,
-              const std::string &what, const char *file, const int line)
+  check_close(const double       value,
+              const double       expected,
+              const double       tol,
+              const std::string &what,
+              const char        *file,
+              const int          line)
   {
     const bool ok = std::abs(value - expected) <= tol;
     if (!ok)
@@ -48,5 +54,5 @@ namespace amfrac_test
 #define CHECK(condition) \
   amfrac_test::check((condition), #condition, __FILE__, __LINE__)
 #define CHECK_CLOSE(value, expected, tol) \
-  amfrac_test::check_close((value), (expected), (tol), #value, __FILE__, \
-                           __LINE__)
+  amfrac_test::check_close(               \
+    (value), (expected), (tol), #value, __FILE__, __LINE__)

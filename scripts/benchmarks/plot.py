@@ -42,7 +42,10 @@ def pagano():
 
 def calculix():
     data = rows(f"{doc}/benchmarks/calculix_peer.csv")
-    reference = 0.14366
+    # Extrapolated from amfrac Q2 (n = 20, 28, 40) and CalculiX C3D20
+    # (n = 20, 30, 40): 0.143712 and 0.143714 (rate 1.5); the peer README's
+    # 0.14366 is CalculiX's own n = 58 result.
+    reference = 0.14371
     fig, ax = plt.subplots(figsize=(6.5, 4.5))
     groups = {}
     for r in data:
@@ -54,7 +57,7 @@ def calculix():
                   label=f"{code} {element} {solver}")
     ax.axhline(1e-3, color="gray", lw=0.8)
     ax.set_xlabel("wall time, one core [s]")
-    ax.set_ylabel("|w_c - 0.14366| / 0.14366")
+    ax.set_ylabel("|w_c - 0.14371| / 0.14371 (extrapolated)")
     ax.set_title("[0/90]s plate, uniform pressure: amfrac vs CalculiX")
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7)

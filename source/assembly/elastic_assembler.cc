@@ -1,8 +1,7 @@
+#include <amfrac/assembly/elastic_assembler.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
-
-#include <amfrac/assembly/elastic_assembler.h>
 
 namespace amfrac
 {
@@ -14,21 +13,21 @@ namespace amfrac
     Scratch(const FiniteElement<dim> &fe, const unsigned int degree)
       : fe_values(fe,
                   QGauss<dim>(degree),
-                  update_values | update_gradients | update_quadrature_points |
-                    update_JxW_values)
+                  update_values | update_gradients | update_quadrature_points
+                    | update_JxW_values)
       , face_values(fe,
                     QGauss<dim - 1>(degree),
-                    update_values | update_quadrature_points |
-                      update_normal_vectors | update_JxW_values)
+                    update_values | update_quadrature_points
+                      | update_normal_vectors | update_JxW_values)
       , strains(fe.n_dofs_per_cell())
       , stresses(fe.n_dofs_per_cell())
     {}
 
-    FEValues<dim>                         fe_values;
-    FEFaceValues<dim>                     face_values;
-    std::vector<SymmetricTensor<2, dim>>  strains;
-    std::vector<SymmetricTensor<2, dim>>  stresses;
-    const FEValuesExtractors::Vector      displacement{0};
+    FEValues<dim>                        fe_values;
+    FEFaceValues<dim>                    face_values;
+    std::vector<SymmetricTensor<2, dim>> strains;
+    std::vector<SymmetricTensor<2, dim>> stresses;
+    const FEValuesExtractors::Vector     displacement{0};
   };
 
 
@@ -50,9 +49,9 @@ namespace amfrac
     const AffineConstraints<double> &constraints,
     Matrix                          &matrix) const
   {
-    const MPI_Comm comm =
-      dofs.copy_handler().get_triangulation().get_communicator();
-    TrilinosWrappers::SparsityPattern pattern(dofs.locally_owned_dofs(),
+    const MPI_Comm comm
+      = dofs.copy_handler().get_triangulation().get_communicator();
+    TrilinosWrappers::SparsityPattern    pattern(dofs.locally_owned_dofs(),
                                               dofs.locally_owned_dofs(),
                                               dofs.locally_relevant_dofs(),
                                               comm);
@@ -72,21 +71,21 @@ namespace amfrac
 
   template <int dim>
   void
-  ElasticAssembler<dim>::cell_matrix(Scratch           &scratch,
-                                     const unsigned int ply,
+  ElasticAssembler<dim>::cell_matrix(Scratch            &scratch,
+                                     const unsigned int  ply,
                                      FullMatrix<double> &K) const
   {
-    const auto        &C          = plies[ply].stiffness;
-    const auto        &fe_values  = scratch.fe_values;
-    const unsigned int n          = K.m();
-    K                             = 0;
+    const auto        &C         = plies[ply].stiffness;
+    const auto        &fe_values = scratch.fe_values;
+    const unsigned int n         = K.m();
+    K                            = 0;
     for (const unsigned int q : fe_values.quadrature_point_indices())
       {
         const double JxW = fe_values.JxW(q);
         for (unsigned int i = 0; i < n; ++i)
           {
-            scratch.strains[i] =
-              fe_values[scratch.displacement].symmetric_gradient(i, q);
+            scratch.strains[i]
+              = fe_values[scratch.displacement].symmetric_gradient(i, q);
             scratch.stresses[i] = C * scratch.strains[i] * JxW;
           }
         for (unsigned int i = 0; i < n; ++i)
@@ -123,15 +122,15 @@ namespace amfrac
             for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
               {
                 const unsigned int c = fe.system_to_component_index(i).first;
-                f(i) += fe_values.shape_value(i, q) * value(c) *
-                        fe_values.JxW(q);
+                f(i)
+                  += fe_values.shape_value(i, q) * value(c) * fe_values.JxW(q);
               }
           }
       }
     for (const unsigned int face : cell->face_indices())
       {
-        if (!cell->at_boundary(face) ||
-            !loads.on_face(cell->face(face)->boundary_id()))
+        if (!cell->at_boundary(face)
+            || !loads.on_face(cell->face(face)->boundary_id()))
           continue;
         const auto id = cell->face(face)->boundary_id();
         auto      &fv = scratch.face_values;
@@ -150,9 +149,9 @@ namespace amfrac
             if (loads.pressures.count(id))
               {
                 loads.pressures.at(id)->set_time(t);
-                traction -= loads.pressures.at(id)->value(
-                              fv.quadrature_point(q)) *
-                            fv.normal_vector(q);
+                traction
+                  -= loads.pressures.at(id)->value(fv.quadrature_point(q))
+                     * fv.normal_vector(q);
               }
             for (const unsigned int i : dofs.dofs_on_face(face))
               {
@@ -209,10 +208,10 @@ namespace amfrac
           scratch.fe_values.reinit(cell);
           dofs.get_dof_indices(cell, indices);
           cell_load(scratch, cell, loads, t, f);
-          const bool inhomogeneous =
-            std::any_of(indices.begin(), indices.end(), [&](const auto i) {
-              return constraints.is_inhomogeneously_constrained(i);
-            });
+          const bool inhomogeneous
+            = std::any_of(indices.begin(), indices.end(), [&](const auto i) {
+                return constraints.is_inhomogeneously_constrained(i);
+              });
           if (inhomogeneous)
             {
               cell_matrix(scratch, cell->material_id(), K);
@@ -256,11 +255,10 @@ namespace amfrac
           residual.add(indices, r);
         }
     residual.compress(VectorOperation::add);
-    const MPI_Comm comm =
-      dofs.copy_handler().get_triangulation().get_communicator();
-    energies.strain_energy =
-      Utilities::MPI::sum(energies.strain_energy, comm);
-    energies.load_work = Utilities::MPI::sum(energies.load_work, comm);
+    const MPI_Comm comm
+      = dofs.copy_handler().get_triangulation().get_communicator();
+    energies.strain_energy = Utilities::MPI::sum(energies.strain_energy, comm);
+    energies.load_work     = Utilities::MPI::sum(energies.load_work, comm);
     return energies;
   }
 

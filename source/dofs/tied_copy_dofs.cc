@@ -1,11 +1,9 @@
+#include <amfrac/dofs/tied_copy_dofs.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_dgq.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q1.h>
-
-#include <amfrac/dofs/tied_copy_dofs.h>
-
 #include <stdexcept>
 
 namespace amfrac
@@ -41,9 +39,9 @@ namespace amfrac
   TiedCopyDoFs<dim>::TiedCopyDoFs(const Triangulation<dim> &triangulation,
                                   const unsigned int        degree)
     : triangulation(triangulation)
-    , fe(std::make_unique<FESystem<dim>>(
-        FE_DGQArbitraryNodes<dim>(QGaussLobatto<1>(degree + 1)),
-        dim))
+    , fe(std::make_unique<FESystem<dim>>(FE_DGQArbitraryNodes<dim>(
+                                           QGaussLobatto<1>(degree + 1)),
+                                         dim))
     , dof_handler(triangulation)
     , face_dofs(GeometryInfo<dim>::faces_per_cell)
   {
@@ -74,9 +72,9 @@ namespace amfrac
 
     // Real positions of all copies: copies are tied by position, so no
     // face-orientation logic is needed.
-    std::vector<Point<dim>> copy_position(dof_handler.n_dofs());
-    const MappingQ1<dim>    mapping;
-    FEValues<dim>           fe_values(mapping,
+    std::vector<Point<dim>>              copy_position(dof_handler.n_dofs());
+    const MappingQ1<dim>                 mapping;
+    FEValues<dim>                        fe_values(mapping,
                             *fe,
                             Quadrature<dim>(fe->get_unit_support_points()),
                             update_quadrature_points);
@@ -114,7 +112,8 @@ namespace amfrac
             continue;
           const auto neighbor = cell->neighbor(f);
           // Each conforming face once, from the cell with the lower index.
-          if (neighbor->index() < cell->index() || (released && released(cell, f)))
+          if (neighbor->index() < cell->index()
+              || (released && released(cell, f)))
             continue;
           const unsigned int nf = cell->neighbor_of_neighbor(f);
           cell->get_dof_indices(mine);
@@ -122,10 +121,10 @@ namespace amfrac
           const double tol = 1e-8 * cell->diameter();
           for (const unsigned int i : face_dofs[f])
             for (const unsigned int j : face_dofs[nf])
-              if (fe->system_to_component_index(i).first ==
-                    fe->system_to_component_index(j).first &&
-                  copy_position[mine[i]].distance(copy_position[theirs[j]]) <
-                    tol)
+              if (fe->system_to_component_index(i).first
+                    == fe->system_to_component_index(j).first
+                  && copy_position[mine[i]].distance(copy_position[theirs[j]])
+                       < tol)
                 unite(parent, mine[i], theirs[j]);
         }
   }
@@ -134,11 +133,10 @@ namespace amfrac
 
   template <int dim>
   void
-  TiedCopyDoFs<dim>::number_groups(
-    std::vector<types::global_dof_index> &parent,
-    const std::vector<Point<dim>>        &copy_position)
+  TiedCopyDoFs<dim>::number_groups(std::vector<types::global_dof_index> &parent,
+                                   const std::vector<Point<dim>> &copy_position)
   {
-    const MPI_Comm comm = triangulation.get_communicator();
+    const MPI_Comm     comm    = triangulation.get_communicator();
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
     const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
     const unsigned int n_local = fe->n_dofs_per_cell();
@@ -151,7 +149,7 @@ namespace amfrac
     for (const auto &cell : dof_handler.active_cell_iterators())
       cells_of_rank[n_ranks == 1 ? 0 : cell->subdomain_id()].push_back(cell);
 
-    const auto invalid = numbers::invalid_dof_index;
+    const auto                           invalid = numbers::invalid_dof_index;
     std::vector<types::global_dof_index> group_number(parent.size(), invalid);
     std::vector<types::global_dof_index> local(n_local);
     support_points.clear();
@@ -167,7 +165,8 @@ namespace amfrac
             for (unsigned int node = 0; node < n_nodes; ++node)
               for (unsigned int c = 0; c < dim; ++c)
                 {
-                  const auto copy = local[fe->component_to_system_index(c, node)];
+                  const auto copy
+                    = local[fe->component_to_system_index(c, node)];
                   const auto root = find_root(parent, copy);
                   if (group_number[root] != invalid)
                     continue;
@@ -221,11 +220,11 @@ namespace amfrac
   std::size_t
   TiedCopyDoFs<dim>::memory_consumption() const
   {
-    return dof_handler.memory_consumption() +
-           copy_to_reduced.capacity() * sizeof(types::global_dof_index) +
-           support_points.capacity() * sizeof(Point<dim>) +
-           components.capacity() + owned_dofs.memory_consumption() +
-           relevant_dofs.memory_consumption();
+    return dof_handler.memory_consumption()
+           + copy_to_reduced.capacity() * sizeof(types::global_dof_index)
+           + support_points.capacity() * sizeof(Point<dim>)
+           + components.capacity() + owned_dofs.memory_consumption()
+           + relevant_dofs.memory_consumption();
   }
 
   template class TiedCopyDoFs<2>;

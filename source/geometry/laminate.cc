@@ -1,10 +1,8 @@
-#include <deal.II/grid/grid_generator.h>
-
+#include <algorithm>
 #include <amfrac/geometry/laminate.h>
 #include <amfrac/parameters/input_error.h>
-
-#include <algorithm>
 #include <cmath>
+#include <deal.II/grid/grid_generator.h>
 #include <random>
 
 namespace amfrac
@@ -17,8 +15,8 @@ namespace amfrac
     for (unsigned int p = 0; p < plies.size(); ++p)
       {
         material_of_ply.push_back(materials.index_of(plies[p].material));
-        ply_boundaries.push_back(ply_boundaries.back() +
-                                 geometry.ply_thickness[p]);
+        ply_boundaries.push_back(ply_boundaries.back()
+                                 + geometry.ply_thickness[p]);
       }
   }
 
@@ -33,10 +31,10 @@ namespace amfrac
      */
     template <int dim>
     void
-    distort_interior_vertices(Triangulation<dim> &tria,
-                              const Laminate     &laminate,
-                              const double        amount,
-                              const Point<dim>   &box,
+    distort_interior_vertices(Triangulation<dim>            &tria,
+                              const Laminate                &laminate,
+                              const double                   amount,
+                              const Point<dim>              &box,
                               const std::array<double, dim> &h)
     {
       const unsigned int thickness_axis = dim - 1;
@@ -48,22 +46,22 @@ namespace amfrac
             const unsigned int index = cell->vertex_index(v);
             if (moved[index])
               continue;
-            moved[index] = true;
-            Point<dim> &p = cell->vertex(v);
+            moved[index]   = true;
+            Point<dim>  &p = cell->vertex(v);
             std::mt19937 generator(1234567u + 7919u * index);
             std::uniform_real_distribution<double> shift(-amount, amount);
-            bool on_boundary = false;
+            bool                                   on_boundary = false;
             for (unsigned int d = 0; d < dim; ++d)
-              on_boundary = on_boundary || std::abs(p[d]) < tol * 1e3 ||
-                            std::abs(p[d] - box[d]) < tol * 1e3;
+              on_boundary = on_boundary || std::abs(p[d]) < tol * 1e3
+                            || std::abs(p[d] - box[d]) < tol * 1e3;
             if (on_boundary)
               continue;
-            const bool on_ply_boundary = std::any_of(
-              laminate.ply_boundaries.begin(),
-              laminate.ply_boundaries.end(),
-              [&](const double z) {
-                return std::abs(p[thickness_axis] - z) < tol;
-              });
+            const bool on_ply_boundary
+              = std::any_of(laminate.ply_boundaries.begin(),
+                            laminate.ply_boundaries.end(),
+                            [&](const double z) {
+                              return std::abs(p[thickness_axis] - z) < tol;
+                            });
             for (unsigned int d = 0; d < dim; ++d)
               {
                 const double delta = shift(generator) * h[d];
@@ -91,9 +89,9 @@ namespace amfrac
     for (unsigned int p = 0; p < laminate.n_plies(); ++p)
       steps[dim - 1].insert(steps[dim - 1].end(),
                             geometry.elements_per_ply,
-                            (laminate.ply_boundaries[p + 1] -
-                             laminate.ply_boundaries[p]) /
-                              geometry.elements_per_ply);
+                            (laminate.ply_boundaries[p + 1]
+                             - laminate.ply_boundaries[p])
+                              / geometry.elements_per_ply);
 
     Point<dim> box;
     box[0] = geometry.length;
@@ -105,11 +103,10 @@ namespace amfrac
 
     for (const auto &cell : triangulation.active_cell_iterators())
       {
-        const double z = cell->center()[dim - 1];
-        const auto   upper =
-          std::upper_bound(laminate.ply_boundaries.begin(),
-                           laminate.ply_boundaries.end(),
-                           z);
+        const double z     = cell->center()[dim - 1];
+        const auto   upper = std::upper_bound(laminate.ply_boundaries.begin(),
+                                            laminate.ply_boundaries.end(),
+                                            z);
         cell->set_material_id(
           std::min<unsigned int>(upper - laminate.ply_boundaries.begin() - 1,
                                  laminate.n_plies() - 1));
@@ -119,14 +116,14 @@ namespace amfrac
     if (geometry.mesh_distortion > 0)
       {
         std::array<double, dim> h;
-        const double            scale = std::pow(0.5, geometry.global_refinements);
+        const double scale = std::pow(0.5, geometry.global_refinements);
         h[0] = scale * geometry.length / geometry.elements_along_length;
         if (dim == 3)
           h[1] = scale * geometry.width / geometry.elements_along_width;
-        h[dim - 1] = scale *
-                     *std::min_element(geometry.ply_thickness.begin(),
-                                       geometry.ply_thickness.end()) /
-                     geometry.elements_per_ply;
+        h[dim - 1] = scale
+                     * *std::min_element(geometry.ply_thickness.begin(),
+                                         geometry.ply_thickness.end())
+                     / geometry.elements_per_ply;
         distort_interior_vertices<dim>(
           triangulation, laminate, geometry.mesh_distortion, box, h);
       }

@@ -1,5 +1,4 @@
 #include <amfrac/geometry/stacking_sequence.h>
-
 #include <cctype>
 #include <stdexcept>
 
@@ -45,10 +44,9 @@ namespace amfrac
       [[noreturn]] void
       fail(const std::string &what) const
       {
-        throw std::invalid_argument("malformed stacking sequence '" + text +
-                                    "' at character " +
-                                    std::to_string(position + 1) + ": " +
-                                    what);
+        throw std::invalid_argument(
+          "malformed stacking sequence '" + text + "' at character "
+          + std::to_string(position + 1) + ": " + what);
       }
 
       char
@@ -60,8 +58,8 @@ namespace amfrac
       void
       skip_spaces()
       {
-        while (position < text.size() &&
-               std::isspace(static_cast<unsigned char>(text[position])))
+        while (position < text.size()
+               && std::isspace(static_cast<unsigned char>(text[position])))
           ++position;
       }
 
@@ -167,8 +165,8 @@ namespace amfrac
         if (!unsigned_only && (peek() == '+' || peek() == '-'))
           ++position;
         bool digits = false;
-        while (std::isdigit(static_cast<unsigned char>(peek())) ||
-               peek() == '.')
+        while (std::isdigit(static_cast<unsigned char>(peek()))
+               || peek() == '.')
           {
             digits = digits || (peek() != '.');
             ++position;
@@ -194,8 +192,8 @@ namespace amfrac
           return "";
         ++position;
         const std::size_t start = position;
-        while (std::isalnum(static_cast<unsigned char>(peek())) ||
-               peek() == '-' || peek() == '.')
+        while (std::isalnum(static_cast<unsigned char>(peek())) || peek() == '-'
+               || peek() == '.')
           ++position;
         if (position == start)
           fail("expected a material name after '@'");

@@ -1,8 +1,6 @@
-#include <deal.II/lac/full_matrix.h>
-
 #include <amfrac/material/orthotropic.h>
-
 #include <cmath>
+#include <deal.II/lac/full_matrix.h>
 #include <stdexcept>
 
 namespace amfrac
@@ -10,8 +8,8 @@ namespace amfrac
   namespace
   {
     /** Voigt index pairs in the order 11, 22, 33, 23, 13, 12. */
-    constexpr unsigned int voigt_pair[6][2] =
-      {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
+    constexpr unsigned int voigt_pair[6][2]
+      = {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
 
     /** True if the symmetric matrix @p A admits a Cholesky factorization. */
     bool
@@ -42,9 +40,9 @@ namespace amfrac
     require_positive(const double value, const char *name)
     {
       if (!(value > 0))
-        throw std::invalid_argument(std::string(name) +
-                                    " must be positive, got " +
-                                    std::to_string(value));
+        throw std::invalid_argument(std::string(name)
+                                    + " must be positive, got "
+                                    + std::to_string(value));
     }
   } // namespace
 
@@ -83,7 +81,8 @@ namespace amfrac
     for (unsigned int I = 0; I < 6; ++I)
       for (unsigned int J = 0; J < 6; ++J)
         stiffness[voigt_pair[I][0]][voigt_pair[I][1]][voigt_pair[J][0]]
-                 [voigt_pair[J][1]] = C(I, J);
+                 [voigt_pair[J][1]]
+          = C(I, J);
     return stiffness;
   }
 
@@ -155,11 +154,11 @@ namespace amfrac
     const double C5 = 1. / f.Yt - 1. / f.Yc;
     const double C6 = 1. / f.Zt - 1. / f.Zc;
     const double s1 = s[0][0], s2 = s[1][1], s3 = s[2][2];
-    return C1 * (s2 - s3) * (s2 - s3) + C2 * (s3 - s1) * (s3 - s1) +
-           C3 * (s1 - s2) * (s1 - s2) + C4 * s1 + C5 * s2 + C6 * s3 +
-           s[1][2] * s[1][2] / (f.S23 * f.S23) +
-           s[0][2] * s[0][2] / (f.S13 * f.S13) +
-           s[0][1] * s[0][1] / (f.S12 * f.S12);
+    return C1 * (s2 - s3) * (s2 - s3) + C2 * (s3 - s1) * (s3 - s1)
+           + C3 * (s1 - s2) * (s1 - s2) + C4 * s1 + C5 * s2 + C6 * s3
+           + s[1][2] * s[1][2] / (f.S23 * f.S23)
+           + s[0][2] * s[0][2] / (f.S13 * f.S13)
+           + s[0][1] * s[0][1] / (f.S12 * f.S12);
   }
 
 
@@ -173,9 +172,9 @@ namespace amfrac
       for (unsigned int j = i; j < dim; ++j)
         for (unsigned int k = 0; k < dim; ++k)
           for (unsigned int l = k; l < dim; ++l)
-            result[i][j][k][l] =
-              C[laminate_axis<dim>(i)][laminate_axis<dim>(j)]
-               [laminate_axis<dim>(k)][laminate_axis<dim>(l)];
+            result[i][j][k][l]
+              = C[laminate_axis<dim>(i)][laminate_axis<dim>(j)]
+                 [laminate_axis<dim>(k)][laminate_axis<dim>(l)];
     return result;
   }
 

@@ -9,15 +9,15 @@ namespace amfrac
     std::vector<PlyProperties<dim>> table;
     for (unsigned int p = 0; p < laminate.n_plies(); ++p)
       {
-        const OrthotropicMaterial &material =
-          m.materials[laminate.material_of_ply[p]];
+        const OrthotropicMaterial &material
+          = m.materials[laminate.material_of_ply[p]];
         PlyProperties<dim> ply;
-        ply.rotation     = ply_rotation(laminate.plies[p].angle);
-        ply.stiffness_3d = rotate(stiffness_in_material_axes(material.elastic),
-                                  ply.rotation);
-        ply.stiffness    = restrict_to_model<dim>(ply.stiffness_3d);
-        ply.strengths    = material.strengths;
-        ply.density      = material.elastic.density;
+        ply.rotation = ply_rotation(laminate.plies[p].angle);
+        ply.stiffness_3d
+          = rotate(stiffness_in_material_axes(material.elastic), ply.rotation);
+        ply.stiffness = restrict_to_model<dim>(ply.stiffness_3d);
+        ply.strengths = material.strengths;
+        ply.density   = material.elastic.density;
         table.push_back(ply);
       }
     return table;

@@ -1,13 +1,11 @@
+#include <amfrac/parameters/expressions.h>
+#include <amfrac/parameters/input_error.h>
+#include <cmath>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
-
-#include <amfrac/parameters/expressions.h>
-#include <amfrac/parameters/input_error.h>
-
-#include <cmath>
-#include <map>
 #include <iostream>
+#include <map>
 #include <sstream>
 
 namespace amfrac
@@ -66,8 +64,8 @@ namespace amfrac
       all.assign(n_components, expressions[0]);
     require(all.size() == n_components,
             parameter,
-            "expects one expression or " + std::to_string(n_components) +
-              " separated by ';', got " + std::to_string(expressions.size()));
+            "expects one expression or " + std::to_string(n_components)
+              + " separated by ';', got " + std::to_string(expressions.size()));
     for (const auto &e : all)
       require(!e.empty(), parameter, "an expression is empty");
 
@@ -109,14 +107,13 @@ namespace amfrac
           if (c == '\n')
             c = ' ';
         throw InputError(parameter,
-                         "cannot parse '" + join(all) +
-                           "': " + Utilities::trim(message));
+                         "cannot parse '" + join(all)
+                           + "': " + Utilities::trim(message));
       }
     catch (const std::exception &e)
       {
         throw InputError(parameter,
-                         "cannot parse '" + join(all) +
-                           "': " + e.what());
+                         "cannot parse '" + join(all) + "': " + e.what());
       }
     return function;
   }

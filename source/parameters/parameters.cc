@@ -1,10 +1,8 @@
-#include <deal.II/base/exceptions.h>
-#include <deal.II/base/utilities.h>
-
 #include <amfrac/geometry/stacking_sequence.h>
 #include <amfrac/parameters/input_error.h>
 #include <amfrac/parameters/parameters.h>
-
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
 #include <fstream>
 #include <sstream>
 
@@ -15,8 +13,7 @@ namespace amfrac
     std::vector<std::string>
     split_expressions(const std::string &text)
     {
-      std::vector<std::string> parts =
-        Utilities::split_string_list(text, ';');
+      std::vector<std::string> parts = Utilities::split_string_list(text, ';');
       for (auto &p : parts)
         p = Utilities::trim(p);
       return parts;
@@ -111,14 +108,11 @@ namespace amfrac
           throw InputError("Geometry/Stacking sequence", e.what());
         }
       if (total_thickness > 0)
-        ply_thickness.assign(plies.size(),
-                             total_thickness / plies.size());
-      require(ply_thickness.size() == 1 ||
-                ply_thickness.size() == plies.size(),
+        ply_thickness.assign(plies.size(), total_thickness / plies.size());
+      require(ply_thickness.size() == 1 || ply_thickness.size() == plies.size(),
               "Geometry/Ply thickness",
-              "give one value or one per ply (" +
-                std::to_string(plies.size()) + " plies), got " +
-                std::to_string(ply_thickness.size()));
+              "give one value or one per ply (" + std::to_string(plies.size())
+                + " plies), got " + std::to_string(ply_thickness.size()));
       if (ply_thickness.size() == 1)
         ply_thickness.assign(plies.size(), ply_thickness[0]);
       for (const double t : ply_thickness)
@@ -131,26 +125,26 @@ namespace amfrac
     {
       /** The entries of `subsection Materials`, with defaults for a
        * carbon/epoxy ply (MPa, t/mm^3). */
-      const std::vector<std::pair<const char *, const char *>>
-        material_entries = {{"E1", "135000"},
-                            {"E2", "10000"},
-                            {"E3", "10000"},
-                            {"G12", "5000"},
-                            {"G13", "5000"},
-                            {"G23", "3448"},
-                            {"nu12", "0.3"},
-                            {"nu13", "0.3"},
-                            {"nu23", "0.45"},
-                            {"Density", "1.6e-9"},
-                            {"Xt", "2000"},
-                            {"Xc", "1200"},
-                            {"Yt", "50"},
-                            {"Yc", "200"},
-                            {"Zt", "50"},
-                            {"Zc", "200"},
-                            {"S12", "80"},
-                            {"S13", "80"},
-                            {"S23", "60"}};
+      const std::vector<std::pair<const char *, const char *>> material_entries
+        = {{"E1", "135000"},
+           {"E2", "10000"},
+           {"E3", "10000"},
+           {"G12", "5000"},
+           {"G13", "5000"},
+           {"G23", "3448"},
+           {"nu12", "0.3"},
+           {"nu13", "0.3"},
+           {"nu23", "0.45"},
+           {"Density", "1.6e-9"},
+           {"Xt", "2000"},
+           {"Xc", "1200"},
+           {"Yt", "50"},
+           {"Yc", "200"},
+           {"Zt", "50"},
+           {"Zc", "200"},
+           {"S12", "80"},
+           {"S13", "80"},
+           {"S23", "60"}};
     } // namespace
 
 
@@ -169,15 +163,15 @@ namespace amfrac
       for (const auto &[name, value] : material_entries)
         {
           const std::string n(name);
-          const std::string unit =
-            n == "Density" ? "t/mm^3" : (n.rfind("nu", 0) == 0 ? "-" : "MPa");
-          const std::string what =
-            n.rfind("nu", 0) == 0 ?
-              "Poisson ratio" :
-              (n == "Density" ? "mass density" :
-                                (n[0] == 'E' || n[0] == 'G' ?
-                                   "elastic modulus in material axes" :
-                                   "Hoffman strength (positive magnitude)"));
+          const std::string unit
+            = n == "Density" ? "t/mm^3" : (n.rfind("nu", 0) == 0 ? "-" : "MPa");
+          const std::string what
+            = n.rfind("nu", 0) == 0 ?
+                "Poisson ratio" :
+                (n == "Density" ? "mass density" :
+                                  (n[0] == 'E' || n[0] == 'G' ?
+                                     "elastic modulus in material axes" :
+                                     "Hoffman strength (positive magnitude)"));
           prm.declare_entry(n,
                             value,
                             Patterns::List(Patterns::Double()),
@@ -192,19 +186,19 @@ namespace amfrac
     Materials::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Materials");
-      const std::vector<std::string> names =
-        Utilities::split_string_list(prm.get("Names"));
+      const std::vector<std::string> names
+        = Utilities::split_string_list(prm.get("Names"));
       std::map<std::string, std::vector<double>> values;
       for (const auto &[name, value] : material_entries)
         {
           (void)value;
           values[name] = Utilities::string_to_double(
             Utilities::split_string_list(prm.get(name)));
-          require(values[name].size() == 1 ||
-                    values[name].size() == names.size(),
+          require(values[name].size() == 1
+                    || values[name].size() == names.size(),
                   std::string("Materials/") + name,
-                  "give one value or one per material name (" +
-                    std::to_string(names.size()) + ")");
+                  "give one value or one per material name ("
+                    + std::to_string(names.size()) + ")");
         }
       prm.leave_subsection();
 
@@ -249,8 +243,8 @@ namespace amfrac
             }
           require(e.density >= 0, "Materials/Density", "negative" + at);
           for (const auto &[key, value] : material_entries)
-            if (key[0] == 'X' || key[0] == 'Y' || key[0] == 'Z' ||
-                key[0] == 'S')
+            if (key[0] == 'X' || key[0] == 'Y' || key[0] == 'Z'
+                || key[0] == 'S')
               {
                 (void)value;
                 require(get(key, m) > 0,
@@ -272,8 +266,8 @@ namespace amfrac
         if (materials[m].name == name)
           return m;
       throw InputError("Geometry/Stacking sequence",
-                       "unknown material '" + name +
-                         "' (not in Materials/Names)");
+                       "unknown material '" + name
+                         + "' (not in Materials/Names)");
     }
 
 
@@ -302,8 +296,8 @@ namespace amfrac
 
 
 
-    const std::array<const char *, 6> BoundaryConditions::face_names = {
-      {"x-", "x+", "y-", "y+", "z-", "z+"}};
+    const std::array<const char *, 6> BoundaryConditions::face_names
+      = {{"x-", "x+", "y-", "y+", "z-", "z+"}};
 
 
 
@@ -368,7 +362,7 @@ namespace amfrac
 
 
     void
-    BoundaryConditions::parse_parameters(ParameterHandler &prm,
+    BoundaryConditions::parse_parameters(ParameterHandler  &prm,
                                          const unsigned int dim)
     {
       prm.enter_subsection("Boundary conditions");
@@ -383,10 +377,9 @@ namespace amfrac
           const std::string &type = prm.get("Type");
           face.type               = type == "displacement" ?
                                       BoundaryFace::Type::displacement :
-                                      type == "traction" ?
-                                      BoundaryFace::Type::traction :
-                                      type == "pressure" ? BoundaryFace::Type::pressure :
-                                                           BoundaryFace::Type::free;
+                                    type == "traction" ? BoundaryFace::Type::traction :
+                                    type == "pressure" ? BoundaryFace::Type::pressure :
+                                                         BoundaryFace::Type::free;
           face.components         = {{false, false, false}};
           for (const std::string &c :
                Utilities::split_string_list(prm.get("Components")))
@@ -397,15 +390,14 @@ namespace amfrac
           face.where        = Utilities::trim(prm.get("Where"));
           prm.leave_subsection();
 
-          const std::string path =
-            std::string("Boundary conditions/") + face.name;
+          const std::string path
+            = std::string("Boundary conditions/") + face.name;
           if (f >= 2 * dim)
             require(face.type == BoundaryFace::Type::free,
                     path + "/Type",
-                    "boundary face '" + face.name +
-                      "' does not exist in " + std::to_string(dim) +
-                      "D (faces are x-, x+, y-, y+" +
-                      (dim == 3 ? ", z-, z+)" : ")"));
+                    "boundary face '" + face.name + "' does not exist in "
+                      + std::to_string(dim) + "D (faces are x-, x+, y-, y+"
+                      + (dim == 3 ? ", z-, z+)" : ")"));
           if (face.type == BoundaryFace::Type::displacement)
             for (unsigned int c = dim; c < 3; ++c)
               require(!face.components[c],
@@ -478,8 +470,8 @@ namespace amfrac
       smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
       smoother_type         = prm.get("AMG smoother type");
       aggregation_threshold = prm.get_double("AMG aggregation threshold");
-      auxiliary_threshold =
-        prm.get_double("AMG auxiliary aggregation threshold");
+      auxiliary_threshold
+        = prm.get_double("AMG auxiliary aggregation threshold");
       prm.leave_subsection();
     }
 
@@ -561,8 +553,7 @@ namespace amfrac
       prm.leave_subsection();
 
       require(!directory.empty(), "Output/Directory", "must not be empty");
-      require(!base_name.empty() &&
-                base_name.find('/') == std::string::npos,
+      require(!base_name.empty() && base_name.find('/') == std::string::npos,
               "Output/Base name",
               "must be a plain file name");
       points.clear();
@@ -582,8 +573,8 @@ namespace amfrac
             }
           require(c.size() == dim,
                   "Output/Point values",
-                  "each point needs " + std::to_string(dim) +
-                    " numbers separated by ',', got '" + p + "'");
+                  "each point needs " + std::to_string(dim)
+                    + " numbers separated by ',', got '" + p + "'");
           Point<3> point;
           for (unsigned int d = 0; d < dim; ++d)
             point[d] = c[d];

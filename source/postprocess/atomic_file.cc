@@ -1,10 +1,8 @@
 #include <amfrac/postprocess/atomic_file.h>
-
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
-
 #include <unistd.h>
 
 namespace amfrac
@@ -15,8 +13,8 @@ namespace amfrac
     std::error_code error;
     std::filesystem::rename(from, to, error);
     if (error)
-      throw std::runtime_error("cannot rename '" + from + "' to '" + to +
-                               "': " + error.message());
+      throw std::runtime_error("cannot rename '" + from + "' to '" + to
+                               + "': " + error.message());
   }
 
 
@@ -25,8 +23,7 @@ namespace amfrac
   write_atomically(const std::string                         &path,
                    const std::function<void(std::ostream &)> &writer)
   {
-    const std::string temporary =
-      path + ".tmp" + std::to_string(::getpid());
+    const std::string temporary = path + ".tmp" + std::to_string(::getpid());
     {
       std::ofstream out(temporary);
       if (!out)

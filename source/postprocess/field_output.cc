@@ -1,10 +1,8 @@
+#include <amfrac/postprocess/atomic_file.h>
+#include <amfrac/postprocess/field_output.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/numerics/data_out.h>
-
-#include <amfrac/postprocess/atomic_file.h>
-#include <amfrac/postprocess/field_output.h>
-
 #include <fstream>
 
 namespace amfrac
@@ -12,10 +10,10 @@ namespace amfrac
   namespace
   {
     const char *model_axis_pairs[6] = {"xx", "yy", "zz", "yz", "xz", "xy"};
-    const char *material_axis_names[6] =
-      {"sigma_11", "sigma_22", "sigma_33", "tau_23", "tau_13", "tau_12"};
-    const unsigned int voigt[6][2] =
-      {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
+    const char *material_axis_names[6]
+      = {"sigma_11", "sigma_22", "sigma_33", "tau_23", "tau_13", "tau_12"};
+    const unsigned int voigt[6][2]
+      = {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
   } // namespace
 
 
@@ -98,8 +96,8 @@ namespace amfrac
 
 
   template <int dim>
-  FieldOutput<dim>::FieldOutput(const parameters::Output              &parameters,
-                                const TiedCopyDoFs<dim>               &dofs,
+  FieldOutput<dim>::FieldOutput(const parameters::Output &parameters,
+                                const TiedCopyDoFs<dim>  &dofs,
                                 const std::vector<PlyProperties<dim>> &plies)
     : parameters(parameters)
     , dofs(dofs)
@@ -148,12 +146,12 @@ namespace amfrac
     data_out.add_data_vector(owner, "mpi_rank", DataOut<dim>::type_cell_data);
     data_out.build_patches(dofs.get_fe().degree);
 
-    const std::string stem =
-      parameters.base_name + "-" + Utilities::int_to_string(step, 5);
+    const std::string stem
+      = parameters.base_name + "-" + Utilities::int_to_string(step, 5);
     if (parameters.write_vtu)
       {
-        const std::string piece =
-          stem + "." + Utilities::int_to_string(rank, 4) + ".vtu";
+        const std::string piece
+          = stem + "." + Utilities::int_to_string(rank, 4) + ".vtu";
         write_atomically(path(piece),
                          [&](std::ostream &out) { data_out.write_vtu(out); });
         MPI_Barrier(comm);
@@ -161,8 +159,8 @@ namespace amfrac
           {
             std::vector<std::string> pieces;
             for (unsigned int r = 0; r < n_ranks; ++r)
-              pieces.push_back(stem + "." + Utilities::int_to_string(r, 4) +
-                               ".vtu");
+              pieces.push_back(stem + "." + Utilities::int_to_string(r, 4)
+                               + ".vtu");
             write_atomically(path(stem + ".pvtu"), [&](std::ostream &out) {
               data_out.write_pvtu_record(out, pieces);
             });

@@ -1,6 +1,5 @@
 #include <amfrac/postprocess/atomic_file.h>
 #include <amfrac/postprocess/history.h>
-
 #include <iomanip>
 #include <ostream>
 #include <stdexcept>

@@ -1,10 +1,8 @@
+#include <amfrac/postprocess/point_probe.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_tools.h>
-
-#include <amfrac/postprocess/point_probe.h>
-
 #include <sstream>
 #include <stdexcept>
 
@@ -23,8 +21,10 @@ namespace amfrac
         std::pair<typename TiedCopyDoFs<dim>::CellIterator, Point<dim>> found;
         try
           {
-            found = GridTools::find_active_cell_around_point(
-              mapping, dofs.copy_handler(), p);
+            found
+              = GridTools::find_active_cell_around_point(mapping,
+                                                         dofs.copy_handler(),
+                                                         p);
           }
         catch (...)
           {
@@ -48,7 +48,7 @@ namespace amfrac
   std::vector<typename PointProbe<dim>::Value>
   PointProbe<dim>::evaluate(const dealii::Vector<double> &copy_values) const
   {
-    std::vector<Value> values(cells.size());
+    std::vector<Value>  values(cells.size());
     std::vector<double> flat;
     for (unsigned int k = 0; k < cells.size(); ++k)
       {
@@ -58,16 +58,16 @@ namespace amfrac
                                     Quadrature<dim>(unit_points[k]),
                                     update_values | update_gradients);
             fe_values.reinit(cells[k]);
-            std::vector<Tensor<1, dim>> u(1);
-            std::vector<Tensor<2, dim>> grad(1);
+            std::vector<Tensor<1, dim>>      u(1);
+            std::vector<Tensor<2, dim>>      grad(1);
             const FEValuesExtractors::Vector displacement(0);
             fe_values[displacement].get_function_values(copy_values, u);
             fe_values[displacement].get_function_gradients(copy_values, grad);
             values[k].displacement = u[0];
-            values[k].stress =
-              evaluate_ply_stress(plies[cells[k]->material_id()],
-                                  symmetrize(grad[0]))
-                .model;
+            values[k].stress
+              = evaluate_ply_stress(plies[cells[k]->material_id()],
+                                    symmetrize(grad[0]))
+                  .model;
           }
         for (unsigned int d = 0; d < dim; ++d)
           flat.push_back(values[k].displacement[d]);
@@ -75,8 +75,8 @@ namespace amfrac
           for (unsigned int j = i; j < 3; ++j)
             flat.push_back(values[k].stress[i][j]);
       }
-    const MPI_Comm comm =
-      dofs.copy_handler().get_triangulation().get_communicator();
+    const MPI_Comm comm
+      = dofs.copy_handler().get_triangulation().get_communicator();
     Utilities::MPI::sum(flat, comm, flat);
     unsigned int n = 0;
     for (auto &value : values)

@@ -1,12 +1,10 @@
+#include <amfrac/parameters/expressions.h>
+#include <amfrac/parameters/input_error.h>
+#include <amfrac/simulator/simulator.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/numerics/vector_tools_integrate_difference.h>
-
-#include <amfrac/parameters/expressions.h>
-#include <amfrac/parameters/input_error.h>
-#include <amfrac/simulator/simulator.h>
-
 #include <filesystem>
 
 namespace amfrac
@@ -44,12 +42,13 @@ namespace amfrac
       {
         throw InputError("Output/Point values", e.what());
       }
-    summary = std::make_unique<History>(
-      parameters.output.directory + "/history.csv",
-      Utilities::MPI::this_mpi_process(comm) == 0);
+    summary
+      = std::make_unique<History>(parameters.output.directory + "/history.csv",
+                                  Utilities::MPI::this_mpi_process(comm) == 0);
     if (parameters.output.write_vtu || parameters.output.write_xdmf)
-      field_output =
-        std::make_unique<FieldOutput<dim>>(parameters.output, dof_layer, plies);
+      field_output = std::make_unique<FieldOutput<dim>>(parameters.output,
+                                                        dof_layer,
+                                                        plies);
   }
 
 
@@ -60,8 +59,8 @@ namespace amfrac
   {
     const auto &bc        = parameters.boundary_conditions;
     const auto &constants = bc.constants;
-    const bool  any_body_force =
-      !(bc.body_force.size() == 1 && bc.body_force[0] == "0");
+    const bool  any_body_force
+      = !(bc.body_force.size() == 1 && bc.body_force[0] == "0");
     if (any_body_force)
       loads.body_force = make_expression_function<dim>(
         bc.body_force, dim, constants, "Boundary conditions/Body force");
@@ -87,11 +86,12 @@ namespace amfrac
             for (unsigned int d = 0; d < dim; ++d)
               condition.components[d] = face.components[d];
             if (!face.where.empty())
-              condition.where = make_expression_function<dim>(
-                parameters::split_expressions(face.where),
-                dim,
-                constants,
-                path + "Where");
+              condition.where
+                = make_expression_function<dim>(parameters::split_expressions(
+                                                  face.where),
+                                                dim,
+                                                constants,
+                                                path + "Where");
             prescribed.push_back(condition);
           }
       }
@@ -127,19 +127,20 @@ namespace amfrac
     constraints.clear();
     constraints.reinit(dof_layer.locally_relevant_dofs());
     supported_dofs.assign(prescribed.size(), {});
-    const auto &fe = dof_layer.get_fe();
+    const auto                          &fe = dof_layer.get_fe();
     std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
-    std::vector<bool> visited(dof_layer.n_dofs(), false);
+    std::vector<bool>                    visited(dof_layer.n_dofs(), false);
     for (unsigned int k = 0; k < prescribed.size(); ++k)
       {
         const auto &condition = prescribed[k];
         condition.value->set_time(t);
         std::fill(visited.begin(), visited.end(), false);
-        for (const auto &cell : dof_layer.copy_handler().active_cell_iterators())
+        for (const auto &cell :
+             dof_layer.copy_handler().active_cell_iterators())
           for (const unsigned int f : cell->face_indices())
             {
-              if (!cell->at_boundary(f) ||
-                  cell->face(f)->boundary_id() != condition.boundary_id)
+              if (!cell->at_boundary(f)
+                  || cell->face(f)->boundary_id() != condition.boundary_id)
                 continue;
               dof_layer.get_dof_indices(cell, indices);
               for (const unsigned int i : dof_layer.dofs_on_face(f))
@@ -148,14 +149,14 @@ namespace amfrac
                   const unsigned int c   = dof_layer.component(dof);
                   if (visited[dof] || !condition.components[c])
                     continue;
-                  visited[dof]         = true;
+                  visited[dof]        = true;
                   const Point<dim> &p = dof_layer.support_point(dof);
                   if (condition.where && condition.where->value(p, c) == 0.)
                     continue;
                   if (dof_layer.locally_owned_dofs().is_element(dof))
                     supported_dofs[k].push_back(dof);
-                  if (!dof_layer.locally_relevant_dofs().is_element(dof) ||
-                      constraints.is_constrained(dof))
+                  if (!dof_layer.locally_relevant_dofs().is_element(dof)
+                      || constraints.is_constrained(dof))
                     continue;
                   constraints.add_line(dof);
                   constraints.set_inhomogeneity(dof,
@@ -172,8 +173,8 @@ namespace amfrac
   std::vector<std::vector<double>>
   Simulator<dim>::rigid_body_modes() const
   {
-    const unsigned int n_modes = dim == 3 ? 6 : 3;
-    const IndexSet    &owned   = dof_layer.locally_owned_dofs();
+    const unsigned int               n_modes = dim == 3 ? 6 : 3;
+    const IndexSet                  &owned   = dof_layer.locally_owned_dofs();
     std::vector<std::vector<double>> modes(
       n_modes, std::vector<double>(owned.n_elements(), 0.));
     unsigned int local = 0;
@@ -220,12 +221,11 @@ namespace amfrac
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
         std::error_code error;
-        std::filesystem::create_directories(parameters.output.directory,
-                                            error);
+        std::filesystem::create_directories(parameters.output.directory, error);
         if (error)
           throw InputError("Output/Directory",
-                           "cannot create '" + parameters.output.directory +
-                             "': " + error.message());
+                           "cannot create '" + parameters.output.directory
+                             + "': " + error.message());
       }
     MPI_Barrier(comm);
   }
@@ -237,9 +237,9 @@ namespace amfrac
   Simulator<dim>::run()
   {
     pcout << "amfrac: " << dim << "D, " << laminate.n_plies() << " plies, "
-          << triangulation.n_active_cells() << " cells, "
-          << dof_layer.n_dofs() << " unknowns (" << dof_layer.n_copies()
-          << " node copies), Q" << dof_layer.get_fe().degree << ", "
+          << triangulation.n_active_cells() << " cells, " << dof_layer.n_dofs()
+          << " unknowns (" << dof_layer.n_copies() << " node copies), Q"
+          << dof_layer.get_fe().degree << ", "
           << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)"
           << std::endl;
     if (prescribed.empty())
@@ -276,12 +276,12 @@ namespace amfrac
               assembler.assemble_matrix(constraints, system_matrix);
             }
             TimerOutput::Scope scope(timer, "solver setup");
-            const double seconds = solver.initialize(system_matrix,
+            const double       seconds = solver.initialize(system_matrix,
                                                      rigid_body_modes(),
                                                      dim,
                                                      owned_node_coordinates());
-            pcout << "  " << solver.name() << " set up in " << seconds
-                  << " s" << std::endl;
+            pcout << "  " << solver.name() << " set up in " << seconds << " s"
+                  << std::endl;
           }
         {
           TimerOutput::Scope scope(timer, "assemble rhs");
@@ -289,12 +289,11 @@ namespace amfrac
         }
         {
           TimerOutput::Scope scope(timer, "solve");
-          const auto report = solver.solve(solution, system_rhs);
+          const auto         report = solver.solve(solution, system_rhs);
           constraints.distribute(solution);
           relevant_solution = solution;
-          pcout << "  step " << step << " t=" << t << ": "
-                << report.iterations << " iteration(s), " << report.seconds
-                << " s" << std::endl;
+          pcout << "  step " << step << " t=" << t << ": " << report.iterations
+                << " iteration(s), " << report.seconds << " s" << std::endl;
         }
         postprocess(step, t);
       }
@@ -311,19 +310,19 @@ namespace amfrac
     dof_layer.expand(relevant_solution, copy_values);
 
     const ElasticAssembler<dim> assembler(dof_layer, plies);
-    Vector residual;
+    Vector                      residual;
     residual.reinit(dof_layer.locally_owned_dofs(),
                     dof_layer.locally_relevant_dofs(),
                     comm,
                     /*vector_writable=*/true);
-    const auto energies =
-      assembler.compute_residual(loads, t, relevant_solution, residual);
+    const auto energies
+      = assembler.compute_residual(loads, t, relevant_solution, residual);
 
-    std::vector<std::pair<std::string, double>> row = {
-      {"step", step},
-      {"time", t},
-      {"strain_energy", energies.strain_energy},
-      {"load_work", energies.load_work}};
+    std::vector<std::pair<std::string, double>> row
+      = {{"step", step},
+         {"time", t},
+         {"strain_energy", energies.strain_energy},
+         {"load_work", energies.load_work}};
     const char *axis = "xyz";
     for (unsigned int k = 0; k < prescribed.size(); ++k)
       {
@@ -335,9 +334,10 @@ namespace amfrac
             row.emplace_back("reaction_" + prescribed[k].name + "_" + axis[d],
                              Utilities::MPI::sum(force[d], comm));
       }
-    const auto values = probe->evaluate(copy_values);
-    const char *pairs[6] = {"xx", "yy", "zz", "yz", "xz", "xy"};
-    const unsigned int voigt[6][2] = {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
+    const auto         values   = probe->evaluate(copy_values);
+    const char        *pairs[6] = {"xx", "yy", "zz", "yz", "xz", "xy"};
+    const unsigned int voigt[6][2]
+      = {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
     for (unsigned int p = 0; p < values.size(); ++p)
       {
         const std::string prefix = "p" + std::to_string(p) + "_";
@@ -349,8 +349,9 @@ namespace amfrac
       }
     summary->add_row(row);
 
-    if (field_output && (step % parameters.output.every_n_steps == 0 ||
-                         step == parameters.time.n_steps))
+    if (field_output
+        && (step % parameters.output.every_n_steps == 0
+            || step == parameters.time.n_steps))
       field_output->write(step, t, copy_values);
   }
 
@@ -358,7 +359,7 @@ namespace amfrac
 
   template <int dim>
   double
-  Simulator<dim>::compute_error(const Function<dim>          &exact,
+  Simulator<dim>::compute_error(const Function<dim>        &exact,
                                 const VectorTools::NormType norm) const
   {
     dealii::Vector<float> cellwise(triangulation.n_active_cells());
@@ -367,7 +368,8 @@ namespace amfrac
                                       copy_values,
                                       exact,
                                       cellwise,
-                                      QGauss<dim>(dof_layer.get_fe().degree + 3),
+                                      QGauss<dim>(dof_layer.get_fe().degree
+                                                  + 3),
                                       norm);
     return VectorTools::compute_global_error(triangulation, cellwise, norm);
   }

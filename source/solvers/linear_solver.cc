@@ -1,13 +1,10 @@
-#include <deal.II/base/timer.h>
-#include <deal.II/lac/solver_cg.h>
-
-#include <amfrac/solvers/linear_solver.h>
-
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
 #include <Epetra_LinearProblem.h>
+#include <amfrac/solvers/linear_solver.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/solver_cg.h>
 #include <ml_MultiLevelPreconditioner.h>
-
 #include <sstream>
 
 namespace amfrac
@@ -56,17 +53,17 @@ namespace amfrac
                                       "Amesos_Klu",
                                     *direct_problem));
         AssertThrow(direct != nullptr,
-                    ExcMessage("Amesos package " +
-                               parameters.direct_package +
-                               " is not available"));
+                    ExcMessage("Amesos package " + parameters.direct_package
+                               + " is not available"));
         AssertThrow(direct->SymbolicFactorization() == 0,
                     ExcMessage("symbolic factorization failed"));
         const int status = direct->NumericFactorization();
         AssertThrow(status == 0,
                     ExcMessage("the stiffness matrix could not be factorized "
-                               "(error " + std::to_string(status) +
-                               "): is the laminate free to move as a rigid "
-                               "body? Check the prescribed displacements."));
+                               "(error "
+                               + std::to_string(status)
+                               + "): is the laminate free to move as a rigid "
+                                 "body? Check the prescribed displacements."));
         return timer.wall_time();
       }
 
@@ -86,8 +83,8 @@ namespace amfrac
     // Thin plies make elements much wider than thick; ML's auxiliary
     // aggregation (by the distance Laplacian) needs the node coordinates.
     coordinates = node_coordinates;
-    const char *axis_names[3] = {"x-coordinates", "y-coordinates",
-                                 "z-coordinates"};
+    const char *axis_names[3]
+      = {"x-coordinates", "y-coordinates", "z-coordinates"};
     for (unsigned int d = 0; d < coordinates.size(); ++d)
       ml.set(axis_names[d], coordinates[d].data());
     if (parameters.auxiliary_threshold > 0)
@@ -131,7 +128,8 @@ namespace amfrac
         Vector residual(b);
         matrix->vmult(residual, x);
         residual -= b;
-        const double relative = residual.l2_norm() / std::max(b.l2_norm(), 1e-300);
+        const double relative
+          = residual.l2_norm() / std::max(b.l2_norm(), 1e-300);
         if (!(relative < 1e-6))
           {
             std::ostringstream message;
@@ -145,7 +143,7 @@ namespace amfrac
       }
     else
       {
-        SolverControl control(parameters.max_iterations,
+        SolverControl    control(parameters.max_iterations,
                               parameters.tolerance * b.l2_norm());
         SolverCG<Vector> cg(control);
         try

@@ -4,15 +4,13 @@
 // L2 and H1 errors must converge at rates p+1 and p (within 0.1) for Q1 and
 // Q2; the ConvergenceTable is printed and compared with numdiff against
 // the stored regression values.
-#include <deal.II/base/convergence_table.h>
-#include <deal.II/base/function.h>
-#include <deal.II/base/mpi.h>
+#include "../check.h"
 
 #include <amfrac/parameters/parameters.h>
 #include <amfrac/simulator/simulator.h>
-
-#include "../check.h"
-
+#include <deal.II/base/convergence_table.h>
+#include <deal.II/base/function.h>
+#include <deal.II/base/mpi.h>
 #include <fstream>
 
 using namespace amfrac;
@@ -25,8 +23,7 @@ namespace
   double
   argument(const Point<3> &p, const unsigned int k)
   {
-    return wave[k][0] * p[0] + wave[k][1] * p[1] + wave[k][2] * p[2] +
-           phase[k];
+    return wave[k][0] * p[0] + wave[k][1] * p[1] + wave[k][2] * p[2] + phase[k];
   }
 
   class Exact : public Function<3>
@@ -68,8 +65,8 @@ namespace
       for (unsigned int k = 0; k < 3; ++k)
         for (unsigned int j = 0; j < 3; ++j)
           for (unsigned int l = 0; l < 3; ++l)
-            f += C[i][j][k][l] * wave[k][j] * wave[k][l] *
-                 std::sin(argument(p, k));
+            f += C[i][j][k][l] * wave[k][j] * wave[k][l]
+                 * std::sin(argument(p, k));
       return f;
     }
 
@@ -101,7 +98,7 @@ end
   substitute(std::string text, const std::string &key, const std::string &value)
   {
     for (std::size_t at = text.find(key); at != std::string::npos;
-         at = text.find(key))
+         at             = text.find(key))
       text.replace(at, key.size(), value);
     return text;
   }
@@ -111,21 +108,21 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const bool    root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   std::ofstream table_file(argc > 1 ? argv[1] : "manufactured_solution.txt");
   for (const unsigned int degree : {1u, 2u})
     {
-      ConvergenceTable    table;
-      std::vector<double> L2, H1;
-      const std::vector<unsigned int> meshes =
-        degree == 1 ? std::vector<unsigned int>{2, 4, 8, 16} :
-                      std::vector<unsigned int>{2, 4, 8};
+      ConvergenceTable                table;
+      std::vector<double>             L2, H1;
+      const std::vector<unsigned int> meshes
+        = degree == 1 ? std::vector<unsigned int>{2, 4, 8, 16} :
+                        std::vector<unsigned int>{2, 4, 8};
       for (const unsigned int n : meshes)
         {
-          const auto prm = parameters::Parameters::from_string(substitute(
-            substitute(scene, "@N@", std::to_string(n)),
-            "@DEGREE@",
-            std::to_string(degree)));
+          const auto prm = parameters::Parameters::from_string(
+            substitute(substitute(scene, "@N@", std::to_string(n)),
+                       "@DEGREE@",
+                       std::to_string(degree)));
           const Laminate laminate(prm.geometry, prm.materials);
           const auto     plies = make_ply_table<3>(laminate, prm.materials);
           auto           exact = std::make_shared<Exact>();

@@ -6,13 +6,11 @@
 // reactions carry the total load q0 (2a/pi)^2.
 //
 // usage: app_pagano pagano.prm S
-#include <deal.II/base/mpi.h>
+#include "../check.h"
 
 #include <amfrac/parameters/parameters.h>
 #include <amfrac/simulator/simulator.h>
-
-#include "../check.h"
-
+#include <deal.II/base/mpi.h>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -38,7 +36,7 @@ namespace
   substitute(std::string text, const std::string &key, const std::string &value)
   {
     for (std::size_t at = text.find(key); at != std::string::npos;
-         at = text.find(key))
+         at             = text.find(key))
       text.replace(at, key.size(), value);
     return text;
   }
@@ -53,28 +51,27 @@ main(int argc, char *argv[])
       std::cerr << "usage: app_pagano pagano.prm S (S = 4, 10 or 100)\n";
       return 2;
     }
-  const int        S   = std::atoi(argv[2]);
-  const Reference &ref = pagano.at(S);
-  std::ifstream    file(argv[1]);
+  const int         S   = std::atoi(argv[2]);
+  const Reference  &ref = pagano.at(S);
+  std::ifstream     file(argv[1]);
   std::stringstream text;
   text << file.rdbuf();
   std::string scene = substitute(text.str(), "@A@", std::to_string(S));
-  scene = substitute(scene, "@C@", std::to_string(0.5 * S));
-  scene = substitute(scene, "@N@", std::to_string(ref.n));
-  scene = substitute(scene, "@NZ@", std::to_string(ref.nz));
+  scene             = substitute(scene, "@C@", std::to_string(0.5 * S));
+  scene             = substitute(scene, "@N@", std::to_string(ref.n));
+  scene             = substitute(scene, "@NZ@", std::to_string(ref.nz));
 
   const auto   prm = parameters::Parameters::from_string(scene);
   Simulator<3> simulator(prm, MPI_COMM_WORLD);
   simulator.run();
 
-  const History &h       = simulator.history();
-  const double   q0      = 1, E_T = 1e6, thickness = 1;
-  const double   w_bar   = 100 * E_T * h.value(0, "p0_uz") /
-                       (q0 * thickness * std::pow(S, 4));
+  const History &h  = simulator.history();
+  const double   q0 = 1, E_T = 1e6, thickness = 1;
+  const double   w_bar
+    = 100 * E_T * h.value(0, "p0_uz") / (q0 * thickness * std::pow(S, 4));
   const double sigma_bar = h.value(0, "p1_stress_xx") / (q0 * S * S);
-  std::cout << "S = " << S << ": w_bar = " << w_bar << " (exact "
-            << ref.w_bar << ", error "
-            << 100 * (w_bar - ref.w_bar) / ref.w_bar
+  std::cout << "S = " << S << ": w_bar = " << w_bar << " (exact " << ref.w_bar
+            << ", error " << 100 * (w_bar - ref.w_bar) / ref.w_bar
             << " %), sigma_x_bar = " << sigma_bar << " (exact "
             << ref.sigma_x_bar << ", error "
             << 100 * (sigma_bar - ref.sigma_x_bar) / ref.sigma_x_bar << " %)"

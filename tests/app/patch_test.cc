@@ -3,14 +3,13 @@
 // (uniform in-plane strain, through-thickness strains chosen per ply so that
 // the laminate is traction free on z = const planes) is reproduced to
 // round-off by Q1 and Q2. Runs on any number of MPI ranks.
-#include <deal.II/base/function.h>
-#include <deal.II/base/mpi.h>
-#include <deal.II/lac/full_matrix.h>
+#include "../check.h"
 
 #include <amfrac/parameters/parameters.h>
 #include <amfrac/simulator/simulator.h>
-
-#include "../check.h"
+#include <deal.II/base/function.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/full_matrix.h>
 
 using namespace amfrac;
 
@@ -22,7 +21,7 @@ namespace
   class LaminatePatchField : public Function<3>
   {
   public:
-    LaminatePatchField(const Laminate                     &laminate,
+    LaminatePatchField(const Laminate                      &laminate,
                        const std::vector<PlyProperties<3>> &plies)
       : Function<3>(3)
       , laminate(laminate)
@@ -32,16 +31,16 @@ namespace
       const unsigned int out[3][2] = {{0, 2}, {1, 2}, {2, 2}};
       for (const auto &ply : plies)
         {
-          const auto        &C = ply.stiffness_3d;
-          FullMatrix<double> A(3, 3);
+          const auto            &C = ply.stiffness_3d;
+          FullMatrix<double>     A(3, 3);
           dealii::Vector<double> rhs(3), x(3);
           for (unsigned int r = 0; r < 3; ++r)
             {
               const unsigned int i = out[r][0], j = out[r][1];
               for (unsigned int k = 0; k < 3; ++k)
                 A(r, k) = (k == 2 ? 1. : 2.) * C[i][j][out[k][0]][out[k][1]];
-              rhs(r) = -(C[i][j][0][0] * eps_xx + C[i][j][1][1] * eps_yy +
-                         2 * C[i][j][0][1] * 0.5 * gamma_xy);
+              rhs(r) = -(C[i][j][0][0] * eps_xx + C[i][j][1][1] * eps_yy
+                         + 2 * C[i][j][0][1] * 0.5 * gamma_xy);
             }
           A.gauss_jordan();
           A.vmult(x, rhs);
@@ -75,8 +74,8 @@ namespace
     gradient(const Point<3> &p, const unsigned int component) const override
     {
       unsigned int k = 0;
-      while (k + 1 < laminate.n_plies() &&
-             p[2] > laminate.ply_boundaries[k + 1])
+      while (k + 1 < laminate.n_plies()
+             && p[2] > laminate.ply_boundaries[k + 1])
         ++k;
       const auto  &t = through_thickness[k];
       Tensor<1, 3> g;
@@ -90,8 +89,8 @@ namespace
     }
 
   private:
-    const Laminate                     &laminate;
-    std::vector<std::array<double, 3>>  through_thickness;
+    const Laminate                    &laminate;
+    std::vector<std::array<double, 3>> through_thickness;
   };
 
   const char *scene = R"(
@@ -129,7 +128,7 @@ main(int argc, char *argv[])
       const auto     plies = make_ply_table<3>(laminate, prm.materials);
       auto exact = std::make_shared<LaminatePatchField>(laminate, plies);
 
-      Simulator<3> simulator(prm, MPI_COMM_WORLD);
+      Simulator<3>                           simulator(prm, MPI_COMM_WORLD);
       std::vector<PrescribedDisplacement<3>> supports;
       for (const types::boundary_id id : {0, 1, 2, 3})
         supports.push_back({"side" + std::to_string(id),
@@ -141,10 +140,11 @@ main(int argc, char *argv[])
       simulator.run();
 
       const Functions::ZeroFunction<3> zero(3);
-      const double          error =
-        simulator.compute_error(*exact, VectorTools::L2_norm);
+      const double                     error
+        = simulator.compute_error(*exact, VectorTools::L2_norm);
       const double norm = simulator.compute_error(zero, VectorTools::L2_norm);
-      const double h1   = simulator.compute_error(*exact, VectorTools::H1_seminorm);
+      const double h1
+        = simulator.compute_error(*exact, VectorTools::H1_seminorm);
       if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
         std::cout << "Q" << degree << ": relative L2 error " << error / norm
                   << ", H1 seminorm error " << h1 << std::endl;

@@ -1,8 +1,7 @@
 // Rotated orthotropic stiffness and the Hoffman index.
-#include <amfrac/material/orthotropic.h>
-
 #include "../check.h"
 
+#include <amfrac/material/orthotropic.h>
 #include <stdexcept>
 
 using namespace amfrac;
@@ -44,8 +43,8 @@ namespace
   {
     const SymmetricTensor<4, 3> S = invert(C);
     SymmetricTensor<2, 3>       sigma;
-    sigma[0][0]                       = 1;
-    const SymmetricTensor<2, 3> eps   = S * sigma;
+    sigma[0][0]                     = 1;
+    const SymmetricTensor<2, 3> eps = S * sigma;
     CHECK_CLOSE(eps[0][0], 1. / c.E1, 1e-12 / c.E1);
     CHECK_CLOSE(eps[1][1], -c.nu12 / c.E1, 1e-12 / c.E1);
     CHECK_CLOSE(eps[2][2], -c.nu13 / c.E1, 1e-12 / c.E1);
@@ -63,14 +62,13 @@ main()
   // (minor symmetries are built into SymmetricTensor).
   for (const double angle : {0., 30., 45., -60., 90.})
     {
-      const SymmetricTensor<4, 3> Cr = rotate(C, ply_rotation(angle));
+      const SymmetricTensor<4, 3> Cr   = rotate(C, ply_rotation(angle));
       double                      asym = 0;
       for (unsigned int i = 0; i < 3; ++i)
         for (unsigned int j = 0; j < 3; ++j)
           for (unsigned int k = 0; k < 3; ++k)
             for (unsigned int l = 0; l < 3; ++l)
-              asym = std::max(asym,
-                              std::abs(Cr[i][j][k][l] - Cr[k][l][i][j]));
+              asym = std::max(asym, std::abs(Cr[i][j][k][l] - Cr[k][l][i][j]));
       CHECK(asym < 1e-9 * c.E1);
       // Positive energy for pseudo-random strains.
       double min_energy = 1e300;
@@ -105,13 +103,13 @@ main()
     }
   catch (const std::invalid_argument &e)
     {
-      thrown = std::string(e.what()).find("positive definite") !=
-               std::string::npos;
+      thrown
+        = std::string(e.what()).find("positive definite") != std::string::npos;
     }
   CHECK(thrown);
-  bad    = c;
+  bad     = c;
   bad.G23 = 0;
-  thrown = false;
+  thrown  = false;
   try
     {
       stiffness_in_material_axes(bad);
@@ -125,26 +123,26 @@ main()
   // Hoffman: each uniaxial strength and each pure shear strength gives 1
   // (../shared/reference/README.md section 4).
   Strengths f;
-  f.Xt  = 2000;
-  f.Xc  = 1200;
-  f.Yt  = 50;
-  f.Yc  = 200;
-  f.Zt  = 45;
-  f.Zc  = 180;
-  f.S12 = 80;
-  f.S13 = 75;
-  f.S23 = 60;
+  f.Xt                = 2000;
+  f.Xc                = 1200;
+  f.Yt                = 50;
+  f.Yc                = 200;
+  f.Zt                = 45;
+  f.Zc                = 180;
+  f.S12               = 80;
+  f.S13               = 75;
+  f.S23               = 60;
   const auto uniaxial = [&](const unsigned int i, const double s) {
     SymmetricTensor<2, 3> sigma;
     sigma[i][i] = s;
     return hoffman_index(sigma, f);
   };
-  const auto shear = [&](const unsigned int i, const unsigned int j,
-                         const double s) {
-    SymmetricTensor<2, 3> sigma;
-    sigma[i][j] = s;
-    return hoffman_index(sigma, f);
-  };
+  const auto shear
+    = [&](const unsigned int i, const unsigned int j, const double s) {
+        SymmetricTensor<2, 3> sigma;
+        sigma[i][j] = s;
+        return hoffman_index(sigma, f);
+      };
   CHECK_CLOSE(uniaxial(0, f.Xt), 1, 1e-12);
   CHECK_CLOSE(uniaxial(0, -f.Xc), 1, 1e-12);
   CHECK_CLOSE(uniaxial(1, f.Yt), 1, 1e-12);
@@ -159,8 +157,8 @@ main()
   // A stress in laminate axes seen by a 90-degree ply: sigma_yy is the
   // ply's sigma_11.
   SymmetricTensor<2, 3> laminate;
-  laminate[1][1] = 7;
-  laminate[0][1] = 3;
+  laminate[1][1]      = 7;
+  laminate[0][1]      = 3;
   const auto material = to_material_axes(laminate, ply_rotation(90));
   CHECK_CLOSE(material[0][0], 7, 1e-12);
   CHECK_CLOSE(material[1][1], 0, 1e-12);

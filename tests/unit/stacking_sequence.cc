@@ -1,9 +1,8 @@
 // Stacking-sequence parser: valid forms give the expected ply lists,
 // malformed ones throw with the position of the error.
-#include <amfrac/geometry/stacking_sequence.h>
-
 #include "../check.h"
 
+#include <amfrac/geometry/stacking_sequence.h>
 #include <stdexcept>
 
 using namespace amfrac;
@@ -28,8 +27,7 @@ namespace
       }
     catch (const std::invalid_argument &e)
       {
-        return std::string(e.what()).find("at character") !=
-               std::string::npos;
+        return std::string(e.what()).find("at character") != std::string::npos;
       }
     return false;
   }
@@ -52,8 +50,17 @@ main()
   const auto named = parse_stacking_sequence("[0@glass/90]");
   CHECK(named[0].material == "glass" && named[1].material.empty());
 
-  for (const char *bad : {"", "0/90", "[0/90", "[0//90]", "[0_0]", "[0_]",
-                          "[(0/90]", "[0/90]x", "[abc]", "[0@]", "[400]",
+  for (const char *bad : {"",
+                          "0/90",
+                          "[0/90",
+                          "[0//90]",
+                          "[0_0]",
+                          "[0_]",
+                          "[(0/90]",
+                          "[0/90]x",
+                          "[abc]",
+                          "[0@]",
+                          "[400]",
                           "[0/90]s s"})
     {
       const bool ok = rejects(bad);

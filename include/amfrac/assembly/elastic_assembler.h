@@ -1,13 +1,12 @@
 #pragma once
 
+#include <amfrac/assembly/loads.h>
+#include <amfrac/dofs/tied_copy_dofs.h>
+#include <amfrac/material/ply_table.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
-
-#include <amfrac/assembly/loads.h>
-#include <amfrac/dofs/tied_copy_dofs.h>
-#include <amfrac/material/ply_table.h>
 
 namespace amfrac
 {
@@ -67,14 +66,15 @@ namespace amfrac
     class Scratch;
 
     void
-    cell_matrix(Scratch &scratch, const unsigned int ply, FullMatrix<double> &K)
-      const;
+    cell_matrix(Scratch            &scratch,
+                const unsigned int  ply,
+                FullMatrix<double> &K) const;
 
     void
-    cell_load(Scratch                                            &scratch,
-              const typename TiedCopyDoFs<dim>::CellIterator     &cell,
-              const Loads<dim>                                   &loads,
-              const double                                        t,
-              dealii::Vector<double>                             &f) const;
+    cell_load(Scratch                                        &scratch,
+              const typename TiedCopyDoFs<dim>::CellIterator &cell,
+              const Loads<dim>                               &loads,
+              const double                                    t,
+              dealii::Vector<double>                         &f) const;
   };
 } // namespace amfrac

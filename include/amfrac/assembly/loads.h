@@ -2,7 +2,6 @@
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/types.h>
-
 #include <map>
 #include <memory>
 

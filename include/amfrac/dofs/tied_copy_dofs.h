@@ -4,7 +4,6 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/lac/vector.h>
-
 #include <functional>
 #include <memory>
 #include <vector>
@@ -34,8 +33,8 @@ namespace amfrac
   public:
     using CellIterator = typename DoFHandler<dim>::active_cell_iterator;
     /** Says whether the face @p face of @p cell is released (untied). */
-    using FaceFilter =
-      std::function<bool(const CellIterator &cell, const unsigned int face)>;
+    using FaceFilter
+      = std::function<bool(const CellIterator &cell, const unsigned int face)>;
 
     TiedCopyDoFs(const Triangulation<dim> &triangulation,
                  const unsigned int        degree);
@@ -119,22 +118,22 @@ namespace amfrac
     memory_consumption() const;
 
   private:
-    const Triangulation<dim>                &triangulation;
-    std::unique_ptr<FESystem<dim>>           fe;
-    DoFHandler<dim>                          dof_handler;
-    std::vector<std::vector<unsigned int>>   face_dofs;
-    std::vector<types::global_dof_index>     copy_to_reduced;
-    std::vector<Point<dim>>                  support_points;
-    std::vector<unsigned char>               components;
-    IndexSet                                 owned_dofs;
-    IndexSet                                 relevant_dofs;
+    const Triangulation<dim>              &triangulation;
+    std::unique_ptr<FESystem<dim>>         fe;
+    DoFHandler<dim>                        dof_handler;
+    std::vector<std::vector<unsigned int>> face_dofs;
+    std::vector<types::global_dof_index>   copy_to_reduced;
+    std::vector<Point<dim>>                support_points;
+    std::vector<unsigned char>             components;
+    IndexSet                               owned_dofs;
+    IndexSet                               relevant_dofs;
 
     /** Union-find over copies: tie the copies of two faces that share a
      * support point and a component. */
     void
-    tie_faces(const FaceFilter                           &released,
-              const std::vector<Point<dim>>              &copy_position,
-              std::vector<types::global_dof_index>       &parent) const;
+    tie_faces(const FaceFilter                     &released,
+              const std::vector<Point<dim>>        &copy_position,
+              std::vector<types::global_dof_index> &parent) const;
 
     void
     number_groups(std::vector<types::global_dof_index> &parent,

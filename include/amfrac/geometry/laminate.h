@@ -1,11 +1,9 @@
 #pragma once
 
-#include <deal.II/grid/tria.h>
-
 #include <amfrac/geometry/stacking_sequence.h>
 #include <amfrac/material/orthotropic.h>
 #include <amfrac/parameters/parameters.h>
-
+#include <deal.II/grid/tria.h>
 #include <vector>
 
 namespace amfrac
@@ -56,7 +54,7 @@ namespace amfrac
   bool
   is_ply_interface(const CellIterator &cell, const unsigned int face)
   {
-    return !cell->at_boundary(face) &&
-           cell->neighbor(face)->material_id() != cell->material_id();
+    return !cell->at_boundary(face)
+           && cell->neighbor(face)->material_id() != cell->material_id();
   }
 } // namespace amfrac

@@ -2,7 +2,6 @@
 
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
-
 #include <string>
 
 namespace amfrac

@@ -3,7 +3,6 @@
 #include <amfrac/geometry/laminate.h>
 #include <amfrac/material/orthotropic.h>
 #include <amfrac/parameters/parameters.h>
-
 #include <vector>
 
 namespace amfrac
@@ -57,15 +56,15 @@ namespace amfrac
   evaluate_ply_stress(const PlyProperties<dim>      &ply,
                       const SymmetricTensor<2, dim> &strain)
   {
-    const SymmetricTensor<2, 3> laminate =
-      ply.stiffness_3d * embed_in_3d<dim>(strain);
+    const SymmetricTensor<2, 3> laminate
+      = ply.stiffness_3d * embed_in_3d<dim>(strain);
     PlyStress result;
     for (unsigned int a = 0; a < 3; ++a)
       for (unsigned int b = a; b < 3; ++b)
         result.model[a][b] = laminate[laminate_axis_of_model_axis<dim>(a)]
-                                    [laminate_axis_of_model_axis<dim>(b)];
+                                     [laminate_axis_of_model_axis<dim>(b)];
     result.material = to_material_axes(laminate, ply.rotation);
-    result.hoffman   = hoffman_index(result.material, ply.strengths);
+    result.hoffman  = hoffman_index(result.material, ply.strengths);
     return result;
   }
 } // namespace amfrac

@@ -1,7 +1,6 @@
 #pragma once
 
 #include <deal.II/base/function.h>
-
 #include <memory>
 #include <string>
 #include <vector>

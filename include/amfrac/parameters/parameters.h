@@ -1,11 +1,9 @@
 #pragma once
 
+#include <amfrac/material/orthotropic.h>
+#include <array>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
-
-#include <amfrac/material/orthotropic.h>
-
-#include <array>
 #include <string>
 #include <vector>
 

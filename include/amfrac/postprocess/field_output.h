@@ -1,13 +1,11 @@
 #pragma once
 
-#include <deal.II/base/data_out_base.h>
-#include <deal.II/lac/vector.h>
-#include <deal.II/numerics/data_postprocessor.h>
-
 #include <amfrac/dofs/tied_copy_dofs.h>
 #include <amfrac/material/ply_table.h>
 #include <amfrac/parameters/parameters.h>
-
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/numerics/data_postprocessor.h>
 #include <string>
 #include <utility>
 #include <vector>
@@ -57,15 +55,16 @@ namespace amfrac
 
     /** @p copy_values: the displacement on the copy layer (owned cells). */
     void
-    write(const unsigned int step, const double time,
+    write(const unsigned int            step,
+          const double                  time,
           const dealii::Vector<double> &copy_values);
 
   private:
-    const parameters::Output                        &parameters;
-    const TiedCopyDoFs<dim>                         &dofs;
-    StressPostprocessor<dim>                         postprocessor;
-    std::vector<std::pair<double, std::string>>      pvd_records;
-    std::vector<XDMFEntry>                           xdmf_entries;
+    const parameters::Output                   &parameters;
+    const TiedCopyDoFs<dim>                    &dofs;
+    StressPostprocessor<dim>                    postprocessor;
+    std::vector<std::pair<double, std::string>> pvd_records;
+    std::vector<XDMFEntry>                      xdmf_entries;
 
     std::string
     path(const std::string &name) const;

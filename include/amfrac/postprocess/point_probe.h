@@ -1,11 +1,9 @@
 #pragma once
 
-#include <deal.II/base/point.h>
-#include <deal.II/lac/vector.h>
-
 #include <amfrac/dofs/tied_copy_dofs.h>
 #include <amfrac/material/ply_table.h>
-
+#include <deal.II/base/point.h>
+#include <deal.II/lac/vector.h>
 #include <vector>
 
 namespace amfrac
@@ -38,9 +36,9 @@ namespace amfrac
     }
 
   private:
-    const TiedCopyDoFs<dim>                             &dofs;
-    const std::vector<PlyProperties<dim>>               &plies;
+    const TiedCopyDoFs<dim>                              &dofs;
+    const std::vector<PlyProperties<dim>>                &plies;
     std::vector<typename TiedCopyDoFs<dim>::CellIterator> cells;
-    std::vector<Point<dim>>                             unit_points;
+    std::vector<Point<dim>>                               unit_points;
   };
 } // namespace amfrac

@@ -1,11 +1,5 @@
 #pragma once
 
-#include <deal.II/base/conditional_ostream.h>
-#include <deal.II/base/timer.h>
-#include <deal.II/distributed/shared_tria.h>
-#include <deal.II/lac/affine_constraints.h>
-#include <deal.II/numerics/vector_tools_common.h>
-
 #include <amfrac/assembly/elastic_assembler.h>
 #include <amfrac/assembly/loads.h>
 #include <amfrac/dofs/tied_copy_dofs.h>
@@ -16,8 +10,12 @@
 #include <amfrac/postprocess/history.h>
 #include <amfrac/postprocess/point_probe.h>
 #include <amfrac/solvers/linear_solver.h>
-
 #include <array>
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/numerics/vector_tools_common.h>
 #include <memory>
 
 namespace amfrac
@@ -84,32 +82,32 @@ namespace amfrac
 
     /** Global norm of (u_h - exact) of the last step. */
     double
-    compute_error(const Function<dim>          &exact,
+    compute_error(const Function<dim>        &exact,
                   const VectorTools::NormType norm) const;
 
   private:
-    const parameters::Parameters          &parameters;
-    const MPI_Comm                         comm;
-    ConditionalOStream                     pcout;
-    mutable TimerOutput                    timer;
-    parallel::shared::Triangulation<dim>   triangulation;
-    Laminate                               laminate;
-    std::vector<PlyProperties<dim>>        plies;
-    TiedCopyDoFs<dim>                      dof_layer;
-    Loads<dim>                             loads;
+    const parameters::Parameters            &parameters;
+    const MPI_Comm                           comm;
+    ConditionalOStream                       pcout;
+    mutable TimerOutput                      timer;
+    parallel::shared::Triangulation<dim>     triangulation;
+    Laminate                                 laminate;
+    std::vector<PlyProperties<dim>>          plies;
+    TiedCopyDoFs<dim>                        dof_layer;
+    Loads<dim>                               loads;
     std::vector<PrescribedDisplacement<dim>> prescribed;
-    std::unique_ptr<PointProbe<dim>>       probe;
-    std::unique_ptr<History>               summary;
-    std::unique_ptr<FieldOutput<dim>>      field_output;
+    std::unique_ptr<PointProbe<dim>>         probe;
+    std::unique_ptr<History>                 summary;
+    std::unique_ptr<FieldOutput<dim>>        field_output;
 
-    AffineConstraints<double>       constraints;
+    AffineConstraints<double> constraints;
     /** Per prescribed condition: the owned reduced dofs it constrains. */
     std::vector<std::vector<types::global_dof_index>> supported_dofs;
-    TrilinosWrappers::SparseMatrix  system_matrix;
-    Vector                          solution;
-    Vector                          relevant_solution;
-    Vector                          system_rhs;
-    dealii::Vector<double>          copy_values;
+    TrilinosWrappers::SparseMatrix                    system_matrix;
+    Vector                                            solution;
+    Vector                                            relevant_solution;
+    Vector                                            system_rhs;
+    dealii::Vector<double>                            copy_values;
 
     void
     build_loads_and_supports();

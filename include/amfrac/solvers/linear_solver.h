@@ -1,12 +1,10 @@
 #pragma once
 
+#include <amfrac/parameters/parameters.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
-
-#include <amfrac/parameters/parameters.h>
-
 #include <memory>
 #include <vector>
 
@@ -41,9 +39,9 @@ namespace amfrac
      * that thin laminates need. Returns the wall time it took.
      */
     double
-    initialize(const Matrix                            &matrix,
+    initialize(const Matrix                           &matrix,
                const std::vector<std::vector<double>> &near_null_space,
-               const unsigned int                       n_pde_equations,
+               const unsigned int                      n_pde_equations,
                const std::vector<std::vector<double>> &node_coordinates);
 
     struct Report
@@ -61,12 +59,12 @@ namespace amfrac
     name() const;
 
   private:
-    const parameters::LinearSolver                   parameters;
-    const Matrix                                    *matrix = nullptr;
-    std::unique_ptr<Epetra_LinearProblem>            direct_problem;
-    std::unique_ptr<Amesos_BaseSolver>               direct;
+    const parameters::LinearSolver                     parameters;
+    const Matrix                                      *matrix = nullptr;
+    std::unique_ptr<Epetra_LinearProblem>              direct_problem;
+    std::unique_ptr<Amesos_BaseSolver>                 direct;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
-    std::vector<double>                              null_space_storage;
-    std::vector<std::vector<double>>                 coordinates;
+    std::vector<double>                                null_space_storage;
+    std::vector<std::vector<double>>                   coordinates;
   };
 } // namespace amfrac
