@@ -44,6 +44,21 @@ namespace
       std::cerr << "amfrac: error: " << line << std::endl;
     return 1;
   }
+
+  /** An error that may have happened on this rank only: say it, then end
+   * every rank (the others may wait in a collective call). */
+  int
+  fail_locally(const std::string &message, const MPI_Comm comm)
+  {
+    const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+    const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
+    fail(n_ranks > 1 ? "(rank " + std::to_string(rank) + ") " + message :
+                       message,
+         true);
+    if (n_ranks > 1)
+      MPI_Abort(comm, 1);
+    return 1;
+  }
 } // namespace
 
 
@@ -102,19 +117,19 @@ main(int argc, char *argv[])
                     message,
                   is_root);
     }
+  catch (const amfrac::CollectiveError &e)
+    {
+      return fail(e.what(), is_root);
+    }
   catch (const dealii::ExceptionBase &e)
     {
       std::ostringstream text;
       e.print_info(text);
-      std::string message = text.str();
-      for (auto &c : message)
-        if (c == '\n')
-          c = ' ';
-      return fail(message, is_root);
+      return fail_locally(text.str(), comm);
     }
   catch (const std::exception &e)
     {
-      return fail(e.what(), is_root);
+      return fail_locally(e.what(), comm);
     }
   return 0;
 }

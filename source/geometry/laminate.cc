@@ -9,7 +9,7 @@ namespace amfrac
 {
   Laminate::Laminate(const parameters::Geometry  &geometry,
                      const parameters::Materials &materials)
-    : plies(parse_stacking_sequence(geometry.stacking_sequence))
+    : plies(geometry.plies)
   {
     ply_boundaries.push_back(0);
     for (unsigned int p = 0; p < plies.size(); ++p)

@@ -21,7 +21,7 @@ namespace amfrac
         expect('[');
         std::vector<Ply> plies = parse_list();
         expect(']');
-        const unsigned int repeats = parse_optional_repeat();
+        const unsigned int repeats = parse_optional_repeat(true);
         std::vector<Ply>   result;
         for (unsigned int r = 0; r < repeats; ++r)
           result.insert(result.end(), plies.begin(), plies.end());
@@ -29,8 +29,12 @@ namespace amfrac
         if (position < text.size() && (peek() == 's' || peek() == 'S'))
           {
             ++position;
-            result.insert(result.end(), result.rbegin(), result.rend());
+            // Mirror from a copy: inserting a vector's own range is UB.
+            const std::vector<Ply> mirrored(result.rbegin(), result.rend());
+            result.insert(result.end(), mirrored.begin(), mirrored.end());
           }
+        if (result.size() > max_plies)
+          fail("more than " + std::to_string(max_plies) + " plies");
         skip_spaces();
         if (position != text.size())
           fail("unexpected text after the closing bracket");
@@ -40,6 +44,8 @@ namespace amfrac
     private:
       const std::string &text;
       std::size_t        position = 0;
+      /** A laminate of more plies is a typo, not a laminate. */
+      static constexpr std::size_t max_plies = 10000;
 
       [[noreturn]] void
       fail(const std::string &what) const
@@ -103,24 +109,29 @@ namespace amfrac
       {
         skip_spaces();
         std::vector<Ply> unit;
+        bool             group = false;
         if (peek() == '(')
           {
             ++position;
             unit = parse_list();
             expect(')');
+            group = true;
           }
         else
           unit = parse_ply_or_pair();
-        const unsigned int repeats = parse_optional_repeat();
-        std::vector<Ply>   result;
+        const unsigned int repeats = parse_optional_repeat(group);
+        if (unit.size() * repeats > max_plies)
+          fail("more than " + std::to_string(max_plies) + " plies");
+        std::vector<Ply> result;
         for (unsigned int r = 0; r < repeats; ++r)
           result.insert(result.end(), unit.begin(), unit.end());
         return result;
       }
 
-      /** '_n' (or a bare n directly after ']' or ')'), default 1. */
+      /** '_n', or a bare n if @p bare_allowed (right after ']' or ')');
+       * default 1. */
       unsigned int
-      parse_optional_repeat()
+      parse_optional_repeat(const bool bare_allowed)
       {
         skip_spaces();
         const bool underscore = (peek() == '_');
@@ -132,9 +143,16 @@ namespace amfrac
               fail("expected a repeat count after '_'");
             return 1;
           }
-        std::size_t         used  = 0;
-        const unsigned long count = std::stoul(text.substr(position), &used);
-        position += used;
+        if (!underscore && !bare_allowed)
+          fail("expected '/' between plies");
+        std::size_t count = 0;
+        while (std::isdigit(static_cast<unsigned char>(peek())))
+          {
+            count = 10 * count + (peek() - '0');
+            if (count > max_plies)
+              fail("repeat count larger than " + std::to_string(max_plies));
+            ++position;
+          }
         if (count == 0)
           fail("a repeat count must be at least 1");
         return static_cast<unsigned int>(count);
@@ -164,14 +182,16 @@ namespace amfrac
         const std::size_t start = position;
         if (!unsigned_only && (peek() == '+' || peek() == '-'))
           ++position;
-        bool digits = false;
+        bool         digits = false;
+        unsigned int dots   = 0;
         while (std::isdigit(static_cast<unsigned char>(peek()))
                || peek() == '.')
           {
             digits = digits || (peek() != '.');
+            dots += (peek() == '.');
             ++position;
           }
-        if (!digits)
+        if (!digits || dots > 1 || position - start > 24)
           {
             position = start;
             fail("expected a ply angle in degrees");

@@ -7,10 +7,6 @@ namespace amfrac
 {
   namespace
   {
-    /** Voigt index pairs in the order 11, 22, 33, 23, 13, 12. */
-    constexpr unsigned int voigt_pair[6][2]
-      = {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
-
     /** True if the symmetric matrix @p A admits a Cholesky factorization. */
     bool
     is_positive_definite(const FullMatrix<double> &A)
@@ -80,8 +76,8 @@ namespace amfrac
     SymmetricTensor<4, 3> stiffness;
     for (unsigned int I = 0; I < 6; ++I)
       for (unsigned int J = 0; J < 6; ++J)
-        stiffness[voigt_pair[I][0]][voigt_pair[I][1]][voigt_pair[J][0]]
-                 [voigt_pair[J][1]]
+        stiffness[voigt_pairs[I][0]][voigt_pairs[I][1]][voigt_pairs[J][0]]
+                 [voigt_pairs[J][1]]
           = C(I, J);
     return stiffness;
   }

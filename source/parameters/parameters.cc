@@ -1,6 +1,8 @@
+#include <algorithm>
 #include <amfrac/geometry/stacking_sequence.h>
 #include <amfrac/parameters/input_error.h>
 #include <amfrac/parameters/parameters.h>
+#include <cctype>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 #include <fstream>
@@ -98,12 +100,11 @@ namespace amfrac
 
       require(length > 0, "Geometry/Length", "must be positive");
       require(width > 0, "Geometry/Width", "must be positive");
-      std::vector<Ply> plies;
       try
         {
           plies = parse_stacking_sequence(stacking_sequence);
         }
-      catch (const std::invalid_argument &e)
+      catch (const std::exception &e)
         {
           throw InputError("Geometry/Stacking sequence", e.what());
         }
@@ -202,6 +203,19 @@ namespace amfrac
         }
       prm.leave_subsection();
 
+      for (const std::string &name : names)
+        require(!name.empty()
+                  && std::all_of(name.begin(),
+                                 name.end(),
+                                 [](const char c) {
+                                   return std::isalnum(
+                                            static_cast<unsigned char>(c))
+                                          || c == '-' || c == '.';
+                                 }),
+                "Materials/Names",
+                "'" + name
+                  + "': a material name may contain letters, digits, '-' "
+                    "and '.' (so that '@name' can refer to it)");
       const auto get = [&](const char *key, const unsigned int m) {
         const auto &v = values[key];
         return v.size() == 1 ? v[0] : v[m];
@@ -343,7 +357,9 @@ namespace amfrac
                             "only at the nodes of this face where its "
                             "expression is nonzero, e.g. abs(z-1)<1e-6 (one "
                             "expression for all components or one per "
-                            "component separated by ';').");
+                            "component separated by ';'). Evaluated once, at "
+                            "t = 0: the supported nodes do not change during "
+                            "a run.");
           prm.declare_entry("Traction",
                             "0",
                             Patterns::Anything(),
@@ -384,6 +400,12 @@ namespace amfrac
           for (const std::string &c :
                Utilities::split_string_list(prm.get("Components")))
             face.components[c[0] - 'x'] = true;
+          // The default "x, y, z" means all components, also in 2D.
+          const bool default_components
+            = Utilities::split_string_list(prm.get("Components")).size() == 3
+              && face.components[0] && face.components[1];
+          if (dim == 2 && default_components)
+            face.components[2] = false;
           face.displacement = split_expressions(prm.get("Displacement"));
           face.traction     = split_expressions(prm.get("Traction"));
           face.pressure     = prm.get("Pressure");
@@ -609,7 +631,7 @@ namespace amfrac
       dimension = prm.get_integer("Dimension");
       geometry.parse_parameters(prm);
       materials.parse_parameters(prm);
-      for (const Ply &ply : parse_stacking_sequence(geometry.stacking_sequence))
+      for (const Ply &ply : geometry.plies)
         materials.index_of(ply.material);
       discretization.parse_parameters(prm);
       boundary_conditions.parse_parameters(prm, dimension);
@@ -639,7 +661,7 @@ namespace amfrac
 
       template <typename Reader>
       Parameters
-      read_parameters(const Reader &reader, const std::string &source)
+      read_parameters(const Reader &reader)
       {
         ParameterHandler prm;
         Parameters::declare_parameters(prm);
@@ -652,7 +674,6 @@ namespace amfrac
             throw InputError(one_line(e));
           }
         Parameters parameters;
-        parameters.source_file = source;
         parameters.parse_parameters(prm);
         return parameters;
       }
@@ -666,7 +687,7 @@ namespace amfrac
       if (!std::ifstream(filename))
         throw InputError("cannot open parameter file '" + filename + "'");
       return read_parameters(
-        [&](ParameterHandler &prm) { prm.parse_input(filename); }, filename);
+        [&](ParameterHandler &prm) { prm.parse_input(filename); });
     }
 
 
@@ -675,8 +696,7 @@ namespace amfrac
     Parameters::from_string(const std::string &text)
     {
       return read_parameters(
-        [&](ParameterHandler &prm) { prm.parse_input_from_string(text); },
-        "<string>");
+        [&](ParameterHandler &prm) { prm.parse_input_from_string(text); });
     }
   } // namespace parameters
 } // namespace amfrac

@@ -24,18 +24,22 @@ namespace amfrac
                    const std::function<void(std::ostream &)> &writer)
   {
     const std::string temporary = path + ".tmp" + std::to_string(::getpid());
-    {
-      std::ofstream out(temporary);
-      if (!out)
-        throw std::runtime_error("cannot write '" + temporary + "'");
-      writer(out);
-      out.flush();
-      if (!out)
-        {
-          std::remove(temporary.c_str());
+    try
+      {
+        std::ofstream out(temporary);
+        if (!out)
+          throw std::runtime_error("cannot write '" + temporary + "'");
+        writer(out);
+        out.flush();
+        if (!out)
           throw std::runtime_error("writing '" + path + "' failed");
-        }
-    }
-    rename_or_throw(temporary, path);
+        out.close();
+        rename_or_throw(temporary, path);
+      }
+    catch (...)
+      {
+        std::remove(temporary.c_str());
+        throw;
+      }
   }
 } // namespace amfrac

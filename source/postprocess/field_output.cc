@@ -9,11 +9,8 @@ namespace amfrac
 {
   namespace
   {
-    const char *model_axis_pairs[6] = {"xx", "yy", "zz", "yz", "xz", "xy"};
     const char *material_axis_names[6]
       = {"sigma_11", "sigma_22", "sigma_33", "tau_23", "tau_13", "tau_12"};
-    const unsigned int voigt[6][2]
-      = {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
   } // namespace
 
 
@@ -31,9 +28,9 @@ namespace amfrac
   StressPostprocessor<dim>::get_names() const
   {
     std::vector<std::string> names;
-    for (const char *pair : model_axis_pairs)
+    for (const char *pair : voigt_names)
       names.push_back(std::string("strain_") + pair);
-    for (const char *pair : model_axis_pairs)
+    for (const char *pair : voigt_names)
       names.push_back(std::string("stress_") + pair);
     for (const char *name : material_axis_names)
       names.emplace_back(name);
@@ -84,7 +81,7 @@ namespace amfrac
             strain_3d[a][b] = strain[a][b];
         for (unsigned int k = 0; k < 6; ++k)
           {
-            const unsigned int i = voigt[k][0], j = voigt[k][1];
+            const unsigned int i = voigt_pairs[k][0], j = voigt_pairs[k][1];
             computed[q](k)      = strain_3d[i][j];
             computed[q](6 + k)  = stress.model[i][j];
             computed[q](12 + k) = stress.material[i][j];
@@ -164,17 +161,20 @@ namespace amfrac
             write_atomically(path(stem + ".pvtu"), [&](std::ostream &out) {
               data_out.write_pvtu_record(out, pieces);
             });
-            pvd_records.emplace_back(time, stem + ".pvtu");
+            auto records = pvd_records;
+            records.emplace_back(time, stem + ".pvtu");
             write_atomically(path(parameters.base_name + ".pvd"),
                              [&](std::ostream &out) {
-                               DataOutBase::write_pvd_record(out, pvd_records);
+                               DataOutBase::write_pvd_record(out, records);
                              });
+            pvd_records = records;
           }
       }
     if (parameters.write_xdmf)
       {
         DataOutBase::DataOutFilter filter(
-          DataOutBase::DataOutFilterFlags(true, true));
+          DataOutBase::DataOutFilterFlags(/*filter_duplicate_vertices=*/false,
+                                          /*xdmf_hdf5_output=*/true));
         data_out.write_filtered_data(filter);
         const std::string h5 = stem + ".h5";
         data_out.write_hdf5_parallel(filter, path(h5 + ".tmp"), comm);

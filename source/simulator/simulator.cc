@@ -218,16 +218,20 @@ namespace amfrac
   void
   Simulator<dim>::prepare_output_directory() const
   {
+    // Rank 0 creates the folder; every rank learns the outcome, so that a
+    // failure ends all of them alike.
+    std::string failure;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
         std::error_code error;
         std::filesystem::create_directories(parameters.output.directory, error);
         if (error)
-          throw InputError("Output/Directory",
-                           "cannot create '" + parameters.output.directory
-                             + "': " + error.message());
+          failure = "cannot create '" + parameters.output.directory
+                    + "': " + error.message();
       }
-    MPI_Barrier(comm);
+    failure = Utilities::MPI::broadcast(comm, failure, 0);
+    if (!failure.empty())
+      throw InputError("Output/Directory", failure);
   }
 
 
@@ -236,17 +240,19 @@ namespace amfrac
   void
   Simulator<dim>::run()
   {
+    if (prescribed.empty())
+      throw InputError("Boundary conditions",
+                       "no face has Type = displacement, so the laminate "
+                       "can move as a rigid body: prescribe displacements "
+                       "on at least one face");
     pcout << "amfrac: " << dim << "D, " << laminate.n_plies() << " plies, "
           << triangulation.n_active_cells() << " cells, " << dof_layer.n_dofs()
           << " unknowns (" << dof_layer.n_copies() << " node copies), Q"
           << dof_layer.get_fe().degree << ", "
           << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)"
           << std::endl;
-    if (prescribed.empty())
-      throw InputError("Boundary conditions",
-                       "no face has Type = displacement, so the laminate "
-                       "can move as a rigid body: prescribe displacements "
-                       "on at least one face");
+    pcout << "  DoF layer: " << dof_layer.memory_consumption() / 1e6
+          << " MB on each rank" << std::endl;
     prepare_output_directory();
 
     const ElasticAssembler<dim> assembler(dof_layer, plies);
@@ -334,18 +340,16 @@ namespace amfrac
             row.emplace_back("reaction_" + prescribed[k].name + "_" + axis[d],
                              Utilities::MPI::sum(force[d], comm));
       }
-    const auto         values   = probe->evaluate(copy_values);
-    const char        *pairs[6] = {"xx", "yy", "zz", "yz", "xz", "xy"};
-    const unsigned int voigt[6][2]
-      = {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
+    const auto values = probe->evaluate(copy_values);
     for (unsigned int p = 0; p < values.size(); ++p)
       {
         const std::string prefix = "p" + std::to_string(p) + "_";
         for (unsigned int d = 0; d < dim; ++d)
           row.emplace_back(prefix + "u" + axis[d], values[p].displacement[d]);
         for (unsigned int k = 0; k < 6; ++k)
-          row.emplace_back(prefix + "stress_" + pairs[k],
-                           values[p].stress[voigt[k][0]][voigt[k][1]]);
+          row.emplace_back(
+            prefix + "stress_" + voigt_names[k],
+            values[p].stress[voigt_pairs[k][0]][voigt_pairs[k][1]]);
       }
     summary->add_row(row);
 

@@ -1,6 +1,7 @@
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
 #include <Epetra_LinearProblem.h>
+#include <amfrac/parameters/input_error.h>
 #include <amfrac/solvers/linear_solver.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/solver_cg.h>
@@ -138,13 +139,22 @@ namespace amfrac
                     << "): the stiffness matrix is singular or nearly so. Is "
                        "the laminate free to move as a rigid body? Check the "
                        "prescribed displacements.";
-            throw std::runtime_error(message.str());
+            throw CollectiveError(message.str());
           }
       }
     else
       {
+        const double norm_b = b.l2_norm();
+        if (norm_b == 0)
+          {
+            // A zero load has the zero solution; CG could not reach a
+            // relative target of 0.
+            x              = 0;
+            report.seconds = timer.wall_time();
+            return report;
+          }
         SolverControl    control(parameters.max_iterations,
-                              parameters.tolerance * b.l2_norm());
+                              parameters.tolerance * norm_b);
         SolverCG<Vector> cg(control);
         try
           {
@@ -159,7 +169,7 @@ namespace amfrac
                     << control.tolerance()
                     << " (raise Linear solver/Max iterations or use Solver "
                        "= direct)";
-            throw std::runtime_error(message.str());
+            throw CollectiveError(message.str());
           }
         report.iterations = control.last_step();
       }

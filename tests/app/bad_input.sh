@@ -118,6 +118,18 @@ subsection Boundary conditions
   end
 end"
 
+# The same failures on two MPI ranks end promptly, with the same line.
+if command -v mpirun > /dev/null; then
+  for name in malformed_stacking singular; do
+    timeout 120 mpirun --allow-run-as-root --oversubscribe -np 2 "$amfrac" "$name.prm" > /dev/null 2> "$name.np2.stderr"
+    status=$?
+    if [ $status -eq 0 ] || [ $status -eq 124 ] || [ "$(grep -c "amfrac: error" "$name.np2.stderr")" -ne 1 ]; then
+      echo "FAIL $name on 2 ranks: status $status"; cat "$name.np2.stderr"; failures=$((failures + 1))
+    else echo "ok   $name on 2 ranks"; fi
+    rm -rf out
+  done
+fi
+
 # A missing file and an unknown option.
 "$amfrac" no_such_file.prm > /dev/null 2> missing.stderr
 status=$?

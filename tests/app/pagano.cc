@@ -51,9 +51,14 @@ main(int argc, char *argv[])
       std::cerr << "usage: app_pagano pagano.prm S (S = 4, 10 or 100)\n";
       return 2;
     }
-  const int         S   = std::atoi(argv[2]);
-  const Reference  &ref = pagano.at(S);
-  std::ifstream     file(argv[1]);
+  const int        S   = std::atoi(argv[2]);
+  const Reference &ref = pagano.at(S);
+  std::ifstream    file(argv[1]);
+  if (!file)
+    {
+      std::cerr << "cannot open " << argv[1] << std::endl;
+      return 2;
+    }
   std::stringstream text;
   text << file.rdbuf();
   std::string scene = substitute(text.str(), "@A@", std::to_string(S));

@@ -2,7 +2,8 @@
 // piecewise-linear displacement field that is an exact elasticity solution
 // (uniform in-plane strain, through-thickness strains chosen per ply so that
 // the laminate is traction free on z = const planes) is reproduced to
-// round-off by Q1 and Q2. Runs on any number of MPI ranks.
+// round-off by Q1 and Q2. The same in 2D plane strain (y through the
+// thickness). Runs on any number of MPI ranks.
 #include "../check.h"
 
 #include <amfrac/parameters/parameters.h>
@@ -93,8 +94,65 @@ namespace
     std::vector<std::array<double, 3>> through_thickness;
   };
 
+  /** Plane strain, y through the thickness: u = (eps_xx x + g_x(y),
+   * g_y(y)) with eps_xy, eps_yy per ply such that sigma_xy = sigma_yy = 0. */
+  class PlaneStrainPatchField : public Function<2>
+  {
+  public:
+    PlaneStrainPatchField(const Laminate                      &laminate,
+                          const std::vector<PlyProperties<2>> &plies)
+      : Function<2>(2)
+      , laminate(laminate)
+    {
+      for (const auto &ply : plies)
+        {
+          const auto &C = ply.stiffness;
+          // Unknowns (eps_xy, eps_yy); rows sigma_xy = 0, sigma_yy = 0.
+          const double a11 = 2 * C[0][1][0][1], a12 = C[0][1][1][1];
+          const double a21 = 2 * C[1][1][0][1], a22 = C[1][1][1][1];
+          const double b1  = -C[0][1][0][0] * eps_xx;
+          const double b2  = -C[1][1][0][0] * eps_xx;
+          const double det = a11 * a22 - a12 * a21;
+          through_thickness.push_back(
+            {{(b1 * a22 - a12 * b2) / det, (a11 * b2 - a21 * b1) / det}});
+        }
+    }
+
+    double
+    value(const Point<2> &p, const unsigned int component) const override
+    {
+      double g[2] = {0, 0};
+      for (unsigned int k = 0; k < laminate.n_plies(); ++k)
+        {
+          const double y0 = laminate.ply_boundaries[k];
+          const double y1 = std::min(p[1], laminate.ply_boundaries[k + 1]);
+          if (y1 <= y0)
+            break;
+          g[0] += 2 * through_thickness[k][0] * (y1 - y0);
+          g[1] += through_thickness[k][1] * (y1 - y0);
+        }
+      return (component == 0 ? eps_xx * p[0] : 0.) + g[component];
+    }
+
+    Tensor<1, 2>
+    gradient(const Point<2> &p, const unsigned int component) const override
+    {
+      unsigned int k = 0;
+      while (k + 1 < laminate.n_plies()
+             && p[1] > laminate.ply_boundaries[k + 1])
+        ++k;
+      const auto &t = through_thickness[k];
+      return component == 0 ? Tensor<1, 2>({eps_xx, 2 * t[0]}) :
+                              Tensor<1, 2>({0., t[1]});
+    }
+
+  private:
+    const Laminate                    &laminate;
+    std::vector<std::array<double, 2>> through_thickness;
+  };
+
   const char *scene = R"(
-set Dimension = 3
+set Dimension = @DIM@
 subsection Geometry
   set Stacking sequence     = [0/45/90/-30]
   set Ply thickness         = 0.25, 0.15, 0.3, 0.2
@@ -113,6 +171,47 @@ subsection Output
   set Directory    = patch_test_output
 end
 )";
+
+  std::string
+  substitute(std::string text, const std::string &key, const std::string &value)
+  {
+    text.replace(text.find(key), key.size(), value);
+    return text;
+  }
+
+  /** Prescribe the field on the lateral faces (the thickness faces stay
+   * traction free) and compare. */
+  template <int dim, typename Field>
+  void
+  check_patch(const std::string &degree)
+  {
+    const auto     prm = parameters::Parameters::from_string(substitute(
+      substitute(scene, "@DIM@", std::to_string(dim)), "@DEGREE@", degree));
+    const Laminate laminate(prm.geometry, prm.materials);
+    const auto     plies = make_ply_table<dim>(laminate, prm.materials);
+    auto           exact = std::make_shared<Field>(laminate, plies);
+
+    Simulator<dim>                           simulator(prm, MPI_COMM_WORLD);
+    std::vector<PrescribedDisplacement<dim>> supports;
+    std::array<bool, dim>                    all;
+    all.fill(true);
+    for (types::boundary_id id = 0; id < 2 * (dim - 1); ++id)
+      supports.push_back(
+        {"side" + std::to_string(id), id, exact, all, nullptr});
+    simulator.set_prescribed_displacements(supports);
+    simulator.run();
+
+    const Functions::ZeroFunction<dim> zero(dim);
+    const double error = simulator.compute_error(*exact, VectorTools::L2_norm);
+    const double norm  = simulator.compute_error(zero, VectorTools::L2_norm);
+    const double h1 = simulator.compute_error(*exact, VectorTools::H1_seminorm);
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::cout << dim << "D Q" << degree << ": relative L2 error "
+                << error / norm << ", H1 seminorm error " << h1 << std::endl;
+    CHECK(error / norm < 1e-10);
+    CHECK(h1 < 1e-10);
+    CHECK(norm > 1e-4); // the field is not trivially zero
+  }
 } // namespace
 
 int
@@ -121,35 +220,8 @@ main(int argc, char *argv[])
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   for (const std::string degree : {"1", "2"})
     {
-      std::string text = scene;
-      text.replace(text.find("@DEGREE@"), 8, degree);
-      const auto     prm = parameters::Parameters::from_string(text);
-      const Laminate laminate(prm.geometry, prm.materials);
-      const auto     plies = make_ply_table<3>(laminate, prm.materials);
-      auto exact = std::make_shared<LaminatePatchField>(laminate, plies);
-
-      Simulator<3>                           simulator(prm, MPI_COMM_WORLD);
-      std::vector<PrescribedDisplacement<3>> supports;
-      for (const types::boundary_id id : {0, 1, 2, 3})
-        supports.push_back({"side" + std::to_string(id),
-                            id,
-                            exact,
-                            {{true, true, true}},
-                            nullptr});
-      simulator.set_prescribed_displacements(supports);
-      simulator.run();
-
-      const Functions::ZeroFunction<3> zero(3);
-      const double                     error
-        = simulator.compute_error(*exact, VectorTools::L2_norm);
-      const double norm = simulator.compute_error(zero, VectorTools::L2_norm);
-      const double h1
-        = simulator.compute_error(*exact, VectorTools::H1_seminorm);
-      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-        std::cout << "Q" << degree << ": relative L2 error " << error / norm
-                  << ", H1 seminorm error " << h1 << std::endl;
-      CHECK(error / norm < 1e-10);
-      CHECK(h1 < 1e-10);
+      check_patch<3, LaminatePatchField>(degree);
+      check_patch<2, PlaneStrainPatchField>(degree);
     }
   return amfrac_test::summary();
 }

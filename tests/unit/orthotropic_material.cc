@@ -162,6 +162,19 @@ main()
   const auto material = to_material_axes(laminate, ply_rotation(90));
   CHECK_CLOSE(material[0][0], 7, 1e-12);
   CHECK_CLOSE(material[1][1], 0, 1e-12);
-  CHECK_CLOSE(std::abs(material[0][1]), 3, 1e-12);
+  CHECK_CLOSE(material[0][1], -3, 1e-12); // tau_12 = -tau_xy at +90
+
+  // The sign of the angle: a +45 ply has its fibres along (1, 1), so
+  // uniaxial sigma_xx = 1 gives tau_12 = -sin cos = -1/2 (classical
+  // transformation), and the rotated stiffness couples sigma_xx with
+  // gamma_xy positively for a fibre-dominated ply (Q16 > 0 at +45).
+  SymmetricTensor<2, 3> sxx;
+  sxx[0][0]        = 1;
+  const auto at_45 = to_material_axes(sxx, ply_rotation(45));
+  CHECK_CLOSE(at_45[0][1], -0.5, 1e-12);
+  CHECK_CLOSE(at_45[0][0], 0.5, 1e-12);
+  const auto C45 = rotate(C, ply_rotation(45));
+  CHECK(C45[0][0][0][1] > 0);
+  CHECK(rotate(C, ply_rotation(-45))[0][0][0][1] < 0);
   return amfrac_test::summary();
 }

@@ -47,8 +47,13 @@ main()
   CHECK(angles("[ 0 / 22.5 ]") == V({0, 22.5}));
   CHECK(angles("[\u00b145_2]") == V({45, -45, 45, -45}));
   CHECK(angles("[((0/90)_2/45)_2]").size() == 10);
+  CHECK(angles("[0/90]2s") == V({0, 90, 0, 90, 90, 0, 90, 0}));
   const auto named = parse_stacking_sequence("[0@glass/90]");
   CHECK(named[0].material == "glass" && named[1].material.empty());
+  // Mirroring keeps the materials of the mirrored plies.
+  const auto hybrid = parse_stacking_sequence("[0@glass/90/45@aramid]s");
+  CHECK(hybrid.size() == 6 && hybrid[3].material == "aramid"
+        && hybrid[4].material.empty() && hybrid[5].material == "glass");
 
   for (const char *bad : {"",
                           "0/90",
@@ -61,7 +66,13 @@ main()
                           "[abc]",
                           "[0@]",
                           "[400]",
-                          "[0/90]s s"})
+                          "[0/90]s s",
+                          "[0 90]",
+                          "[0/90 45]",
+                          "[1.2.3]",
+                          "[0_99999999999]",
+                          "[(0/90)_6000]",
+                          "[0_100/90]_100"})
     {
       const bool ok = rejects(bad);
       CHECK(ok);

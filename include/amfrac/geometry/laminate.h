@@ -48,13 +48,4 @@ namespace amfrac
                      const Laminate             &laminate,
                      Triangulation<dim>         &triangulation);
 
-  /** Ply-boundary face test: true if the face between @p cell and its
-   * neighbour across @p face is a ply interface. */
-  template <typename CellIterator>
-  bool
-  is_ply_interface(const CellIterator &cell, const unsigned int face)
-  {
-    return !cell->at_boundary(face)
-           && cell->neighbor(face)->material_id() != cell->material_id();
-  }
 } // namespace amfrac

@@ -78,11 +78,20 @@ namespace amfrac
   SymmetricTensor<2, 3>
   embed_in_3d(const SymmetricTensor<2, dim> &strain);
 
-  /** Axis of the 3D laminate frame that model axis @p d maps to. */
+  /** Axis of the 3D laminate frame (x, y = width, z = thickness) that
+   * model axis @p a (0..2) maps to: identity in 3D; in 2D the model y is
+   * the thickness and the out-of-plane model z is the laminate width. */
   template <int dim>
   constexpr unsigned int
-  laminate_axis(const unsigned int d)
+  laminate_axis(const unsigned int a)
   {
-    return (dim == 3 || d == 0) ? d : 2;
+    return dim == 3 ? a : (a == 0 ? 0 : (a == 1 ? 2 : 1));
   }
+
+  /** Voigt order of symmetric 3x3 index pairs: 11, 22, 33, 23, 13, 12. */
+  constexpr unsigned int voigt_pairs[6][2]
+    = {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
+
+  /** Names of the Voigt pairs in model axes, for output columns. */
+  constexpr const char *voigt_names[6] = {"xx", "yy", "zz", "yz", "xz", "xy"};
 } // namespace amfrac

@@ -29,16 +29,6 @@ namespace amfrac
 
 namespace amfrac
 {
-  /** Model axis -> 3D laminate axis: identity in 3D; in 2D the model y is
-   * the thickness (laminate z) and the out-of-plane model z is the
-   * laminate width y. */
-  template <int dim>
-  constexpr unsigned int
-  laminate_axis_of_model_axis(const unsigned int a)
-  {
-    return dim == 3 ? a : (a == 0 ? 0 : (a == 1 ? 2 : 1));
-  }
-
   /** The stresses one strain produces in a ply, in every frame the
    * output needs. */
   struct PlyStress
@@ -61,8 +51,8 @@ namespace amfrac
     PlyStress result;
     for (unsigned int a = 0; a < 3; ++a)
       for (unsigned int b = a; b < 3; ++b)
-        result.model[a][b] = laminate[laminate_axis_of_model_axis<dim>(a)]
-                                     [laminate_axis_of_model_axis<dim>(b)];
+        result.model[a][b]
+          = laminate[laminate_axis<dim>(a)][laminate_axis<dim>(b)];
     result.material = to_material_axes(laminate, ply.rotation);
     result.hoffman  = hoffman_index(result.material, ply.strengths);
     return result;

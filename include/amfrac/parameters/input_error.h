@@ -22,6 +22,17 @@ namespace amfrac
     {}
   };
 
+  /**
+   * An error that every MPI rank raises together (a failed solve, a
+   * singular matrix): each rank can unwind and exit cleanly. Any other
+   * exception may be local to one rank and makes main() abort the job.
+   */
+  class CollectiveError : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
   /** Throw an InputError for @p parameter unless @p condition holds. */
   inline void
   require(const bool         condition,

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <amfrac/geometry/stacking_sequence.h>
 #include <amfrac/material/orthotropic.h>
 #include <array>
 #include <deal.II/base/parameter_handler.h>
@@ -16,7 +17,9 @@ namespace amfrac
     /** `subsection Geometry`: the laminate box and its structured mesh. */
     struct Geometry
     {
-      std::string         stacking_sequence;
+      std::string stacking_sequence;
+      /** The plies of the stacking sequence, bottom first. */
+      std::vector<Ply>    plies;
       std::vector<double> ply_thickness;
       double              total_thickness;
       double              length;
@@ -159,7 +162,6 @@ namespace amfrac
       LinearSolver       linear_solver;
       Time               time;
       Output             output;
-      std::string        source_file;
 
       static void
       declare_parameters(ParameterHandler &prm);

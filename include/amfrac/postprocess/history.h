@@ -21,12 +21,6 @@ namespace amfrac
     void
     add_row(const std::vector<std::pair<std::string, double>> &row);
 
-    const std::vector<std::vector<double>> &
-    rows() const
-    {
-      return values;
-    }
-
     /** The value of @p column in row @p row; throws for unknown names. */
     double
     value(const std::size_t row, const std::string &column) const;

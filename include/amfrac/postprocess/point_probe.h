@@ -29,12 +29,6 @@ namespace amfrac
     std::vector<Value>
     evaluate(const dealii::Vector<double> &copy_values) const;
 
-    std::size_t
-    size() const
-    {
-      return cells.size();
-    }
-
   private:
     const TiedCopyDoFs<dim>                              &dofs;
     const std::vector<PlyProperties<dim>>                &plies;

@@ -86,7 +86,7 @@ namespace amfrac
                   const VectorTools::NormType norm) const;
 
   private:
-    const parameters::Parameters            &parameters;
+    const parameters::Parameters             parameters;
     const MPI_Comm                           comm;
     ConditionalOStream                       pcout;
     mutable TimerOutput                      timer;
