@@ -42,6 +42,17 @@ namespace amfrac_test
       }
   }
 
+  /** @p text with every occurrence of @p key replaced by @p value (the
+   * tests fill placeholders such as @N@ in parameter-file templates). */
+  inline std::string
+  substitute(std::string text, const std::string &key, const std::string &value)
+  {
+    for (std::size_t at = text.find(key); at != std::string::npos;
+         at             = text.find(key))
+      text.replace(at, key.size(), value);
+    return text;
+  }
+
   inline int
   summary()
   {

@@ -94,14 +94,6 @@ subsection Output
 end
 )";
 
-  std::string
-  substitute(std::string text, const std::string &key, const std::string &value)
-  {
-    for (std::size_t at = text.find(key); at != std::string::npos;
-         at             = text.find(key))
-      text.replace(at, key.size(), value);
-    return text;
-  }
 } // namespace
 
 int
@@ -119,10 +111,11 @@ main(int argc, char *argv[])
                         std::vector<unsigned int>{2, 4, 8};
       for (const unsigned int n : meshes)
         {
-          const auto prm = parameters::Parameters::from_string(
-            substitute(substitute(scene, "@N@", std::to_string(n)),
-                       "@DEGREE@",
-                       std::to_string(degree)));
+          const auto prm
+            = parameters::Parameters::from_string(amfrac_test::substitute(
+              amfrac_test::substitute(scene, "@N@", std::to_string(n)),
+              "@DEGREE@",
+              std::to_string(degree)));
           const Laminate laminate(prm.geometry, prm.materials);
           const auto     plies = make_ply_table<3>(laminate, prm.materials);
           auto           exact = std::make_shared<Exact>();

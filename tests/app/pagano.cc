@@ -32,14 +32,6 @@ namespace
                                            {10, {0.7530, 0.590, 12, 2}},
                                            {100, {0.4347, 0.539, 16, 1}}};
 
-  std::string
-  substitute(std::string text, const std::string &key, const std::string &value)
-  {
-    for (std::size_t at = text.find(key); at != std::string::npos;
-         at             = text.find(key))
-      text.replace(at, key.size(), value);
-    return text;
-  }
 } // namespace
 
 int
@@ -61,10 +53,11 @@ main(int argc, char *argv[])
     }
   std::stringstream text;
   text << file.rdbuf();
-  std::string scene = substitute(text.str(), "@A@", std::to_string(S));
-  scene             = substitute(scene, "@C@", std::to_string(0.5 * S));
-  scene             = substitute(scene, "@N@", std::to_string(ref.n));
-  scene             = substitute(scene, "@NZ@", std::to_string(ref.nz));
+  std::string scene
+    = amfrac_test::substitute(text.str(), "@A@", std::to_string(S));
+  scene = amfrac_test::substitute(scene, "@C@", std::to_string(0.5 * S));
+  scene = amfrac_test::substitute(scene, "@N@", std::to_string(ref.n));
+  scene = amfrac_test::substitute(scene, "@NZ@", std::to_string(ref.nz));
 
   const auto   prm = parameters::Parameters::from_string(scene);
   Simulator<3> simulator(prm, MPI_COMM_WORLD);

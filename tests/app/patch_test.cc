@@ -172,12 +172,6 @@ subsection Output
 end
 )";
 
-  std::string
-  substitute(std::string text, const std::string &key, const std::string &value)
-  {
-    text.replace(text.find(key), key.size(), value);
-    return text;
-  }
 
   /** Prescribe the field on the lateral faces (the thickness faces stay
    * traction free) and compare. */
@@ -185,8 +179,11 @@ end
   void
   check_patch(const std::string &degree)
   {
-    const auto     prm = parameters::Parameters::from_string(substitute(
-      substitute(scene, "@DIM@", std::to_string(dim)), "@DEGREE@", degree));
+    const auto prm
+      = parameters::Parameters::from_string(amfrac_test::substitute(
+        amfrac_test::substitute(scene, "@DIM@", std::to_string(dim)),
+        "@DEGREE@",
+        degree));
     const Laminate laminate(prm.geometry, prm.materials);
     const auto     plies = make_ply_table<dim>(laminate, prm.materials);
     auto           exact = std::make_shared<Field>(laminate, plies);
