@@ -60,13 +60,6 @@ namespace amfrac
   void
   TiedCopyDoFs<dim>::distribute(const FaceFilter &released)
   {
-    for (const auto &cell : triangulation.active_cell_iterators())
-      for (const unsigned int f : cell->face_indices())
-        if (!cell->at_boundary(f) && cell->neighbor_is_coarser(f))
-          throw std::logic_error(
-            "TiedCopyDoFs: meshes with hanging nodes are not supported yet "
-            "(adaptive refinement comes with the adaptivity issue)");
-
     dof_handler.distribute_dofs(*fe);
     const unsigned int n_local = fe->n_dofs_per_cell();
 
@@ -91,7 +84,83 @@ namespace amfrac
     for (types::global_dof_index i = 0; i < parent.size(); ++i)
       parent[i] = i;
     tie_faces(released, copy_position, parent);
+    // A fine copy on a hanging face that sits on a node of the coarse
+    // neighbour is that node (a union); the others interpolate the coarse
+    // face (a constraint on the reduced numbering).
+    for_each_hanging_copy(released,
+                          copy_position,
+                          [&](const auto copy, const auto &weights) {
+                            if (weights.size() == 1)
+                              unite(parent, copy, weights[0].first);
+                          });
     number_groups(parent, copy_position);
+
+    hanging_constraints.clear();
+    for_each_hanging_copy(
+      released, copy_position, [&](const auto copy, const auto &weights) {
+        const auto line = copy_to_reduced[copy];
+        if (weights.size() == 1 || hanging_constraints.is_constrained(line))
+          return;
+        hanging_constraints.add_line(line);
+        for (const auto &[coarse, weight] : weights)
+          hanging_constraints.add_entry(line, copy_to_reduced[coarse], weight);
+      });
+    hanging_constraints.close();
+    // The coarse dofs that a relevant hanging dof depends on are relevant
+    // too: this rank writes into their rows.
+    std::vector<types::global_dof_index> extra;
+    for (const auto &line : hanging_constraints.get_lines())
+      if (relevant_dofs.is_element(line.index))
+        for (const auto &entry : line.entries)
+          extra.push_back(entry.first);
+    std::sort(extra.begin(), extra.end());
+    extra.erase(std::unique(extra.begin(), extra.end()), extra.end());
+    relevant_dofs.add_indices(extra.begin(), extra.end());
+    relevant_dofs.compress();
+  }
+
+
+
+  template <int dim>
+  template <typename Callback>
+  void
+  TiedCopyDoFs<dim>::for_each_hanging_copy(
+    const FaceFilter              &released,
+    const std::vector<Point<dim>> &copy_position,
+    const Callback                &callback) const
+  {
+    const MappingQ1<dim>                 mapping;
+    const unsigned int                   n_local = fe->n_dofs_per_cell();
+    std::vector<types::global_dof_index> fine(n_local), coarse(n_local);
+    std::vector<std::pair<types::global_dof_index, double>> weights;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        {
+          if (cell->at_boundary(f) || !cell->neighbor_is_coarser(f)
+              || (released && released(cell, f)))
+            continue;
+          const auto neighbor = cell->neighbor(f);
+          cell->get_dof_indices(fine);
+          neighbor->get_dof_indices(coarse);
+          for (const unsigned int i : face_dofs[f])
+            {
+              const unsigned int c = fe->system_to_component_index(i).first;
+              const Point<dim>   unit
+                = mapping.transform_real_to_unit_cell(neighbor,
+                                                      copy_position[fine[i]]);
+              weights.clear();
+              for (unsigned int j = 0; j < n_local; ++j)
+                if (fe->system_to_component_index(j).first == c)
+                  {
+                    const double w = fe->shape_value(j, unit);
+                    if (std::abs(w) > 1e-10)
+                      weights.emplace_back(coarse[j], w);
+                  }
+              if (weights.size() == 1)
+                weights[0].second = 1;
+              callback(fine[i], weights);
+            }
+        }
   }
 
 
@@ -109,6 +178,9 @@ namespace amfrac
       for (const unsigned int f : cell->face_indices())
         {
           if (cell->at_boundary(f))
+            continue;
+          // Hanging faces are tied by for_each_hanging_copy().
+          if (cell->neighbor_is_coarser(f) || cell->neighbor(f)->has_children())
             continue;
           const auto neighbor = cell->neighbor(f);
           // Each conforming face once, from the cell with the lower index.
@@ -221,6 +293,7 @@ namespace amfrac
   TiedCopyDoFs<dim>::memory_consumption() const
   {
     return dof_handler.memory_consumption()
+           + hanging_constraints.memory_consumption()
            + copy_to_reduced.capacity() * sizeof(types::global_dof_index)
            + support_points.capacity() * sizeof(Point<dim>)
            + components.capacity() + owned_dofs.memory_consumption()

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <amfrac/geometry/laminate.h>
+#include <amfrac/parameters/expressions.h>
 #include <amfrac/parameters/input_error.h>
 #include <cmath>
 #include <deal.II/grid/grid_generator.h>
@@ -126,6 +127,19 @@ namespace amfrac
                      / geometry.elements_per_ply;
         distort_interior_vertices<dim>(
           triangulation, laminate, geometry.mesh_distortion, box, h);
+      }
+
+    if (!geometry.refinement_region.empty())
+      {
+        const auto region = make_expression_function<dim>(
+          {geometry.refinement_region}, 1, "", "Geometry/Refinement region");
+        for (unsigned int r = 0; r < geometry.region_refinements; ++r)
+          {
+            for (const auto &cell : triangulation.active_cell_iterators())
+              if (region->value(cell->center()) != 0.)
+                cell->set_refine_flag();
+            triangulation.execute_coarsening_and_refinement();
+          }
       }
   }
 

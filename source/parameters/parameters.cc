@@ -76,6 +76,16 @@ namespace amfrac
                         "Random interior-vertex perturbation as a fraction "
                         "of the element size (for patch tests); ply "
                         "interfaces stay planar.");
+      prm.declare_entry("Refinement region",
+                        "",
+                        Patterns::Anything(),
+                        "Cells whose centre makes this expression of x, y, "
+                        "(z) nonzero are refined Region refinements times, "
+                        "after the distortion (hanging nodes), e.g. x < 2.");
+      prm.declare_entry("Region refinements",
+                        "1",
+                        Patterns::Integer(0, 5),
+                        "How often the Refinement region is refined.");
       prm.leave_subsection();
     }
 
@@ -96,6 +106,8 @@ namespace amfrac
       elements_per_ply      = prm.get_integer("Elements per ply");
       global_refinements    = prm.get_integer("Global refinements");
       mesh_distortion       = prm.get_double("Mesh distortion");
+      refinement_region     = Utilities::trim(prm.get("Refinement region"));
+      region_refinements    = prm.get_integer("Region refinements");
       prm.leave_subsection();
 
       require(length > 0, "Geometry/Length", "must be positive");

@@ -126,6 +126,14 @@ namespace amfrac
     // a dof is constrained consistently whichever rank sees it.
     constraints.clear();
     constraints.reinit(dof_layer.locally_relevant_dofs());
+    // Hanging nodes first: a hanging node on a supported face stays
+    // constrained to its coarse face (its value follows from the support).
+    for (const auto &line : dof_layer.hanging_node_constraints().get_lines())
+      if (dof_layer.locally_relevant_dofs().is_element(line.index))
+        {
+          constraints.add_line(line.index);
+          constraints.add_entries(line.index, line.entries);
+        }
     supported_dofs.assign(prescribed.size(), {});
     const auto                          &fe = dof_layer.get_fe();
     std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());

@@ -2,8 +2,9 @@
 // piecewise-linear displacement field that is an exact elasticity solution
 // (uniform in-plane strain, through-thickness strains chosen per ply so that
 // the laminate is traction free on z = const planes) is reproduced to
-// round-off by Q1 and Q2. The same in 2D plane strain (y through the
-// thickness). Runs on any number of MPI ranks.
+// round-off by Q1 and Q2, also where part of the mesh is refined (hanging
+// nodes). The same in 2D plane strain (y through the thickness). Runs on any
+// number of MPI ranks.
 #include "../check.h"
 
 #include <amfrac/parameters/parameters.h>
@@ -162,6 +163,8 @@ subsection Geometry
   set Elements along width  = 3
   set Elements per ply      = 2
   set Mesh distortion       = 0.25
+  set Refinement region     = x < 1.5
+  set Region refinements    = 1
 end
 subsection Discretization
   set Finite element degree = @DEGREE@

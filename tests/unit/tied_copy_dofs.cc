@@ -5,8 +5,10 @@
 
 #include <amfrac/dofs/tied_copy_dofs.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/lac/affine_constraints.h>
 
 using namespace amfrac;
 
@@ -39,6 +41,39 @@ namespace
     CHECK(dofs.n_copies()
           == tria.n_active_cells() * std::pow(degree + 1, dim) * dim);
   }
+
+  /** With hanging nodes: free unknowns (reduced minus constrained) equal
+   * those of FE_Q with deal.II's hanging-node constraints. */
+  template <int dim>
+  void
+  check_hanging_count(const unsigned int degree)
+  {
+    Triangulation<dim> tria;
+    GridGenerator::subdivided_hyper_cube(tria, 3);
+    for (unsigned int step = 0; step < 2; ++step)
+      {
+        for (const auto &cell : tria.active_cell_iterators())
+          if (cell->center()[0] < 1. / 3 + 1e-12 * step
+              && cell->center()[1] < 0.5)
+            cell->set_refine_flag();
+        tria.execute_coarsening_and_refinement();
+      }
+    TiedCopyDoFs<dim> dofs(tria, degree);
+    dofs.distribute();
+    DoFHandler<dim> q(tria);
+    q.distribute_dofs(FESystem<dim>(FE_Q<dim>(degree), dim));
+    AffineConstraints<double> hanging;
+    DoFTools::make_hanging_node_constraints(q, hanging);
+    hanging.close();
+    const auto free_copies
+      = dofs.n_dofs() - dofs.hanging_node_constraints().n_constraints();
+    const auto free_q = q.n_dofs() - hanging.n_constraints();
+    CHECK(dofs.hanging_node_constraints().n_constraints() > 0);
+    CHECK(free_copies == free_q);
+    if (free_copies != free_q)
+      std::cerr << "  " << dim << "D Q" << degree << ": " << free_copies
+                << " free unknowns, FE_Q has " << free_q << std::endl;
+  }
 } // namespace
 
 int
@@ -49,6 +84,8 @@ main(int argc, char *argv[])
     {
       check_continuous_count<2>(degree);
       check_continuous_count<3>(degree);
+      check_hanging_count<2>(degree);
+      check_hanging_count<3>(degree);
     }
 
   // 2 x 2 squares, Q1: 9 nodes. Releasing the lower half of the vertical

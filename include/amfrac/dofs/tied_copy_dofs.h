@@ -3,6 +3,7 @@
 #include <deal.II/base/index_set.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/vector.h>
 #include <functional>
 #include <memory>
@@ -40,7 +41,9 @@ namespace amfrac
                  const unsigned int        degree);
 
     /** Build the copies and the tie map; faces for which @p released
-     * returns true stay untied. Throws for meshes with hanging nodes. */
+     * returns true stay untied. On a hanging face, a fine copy that sits on
+     * a coarse node is tied to it and the others are constrained to
+     * interpolate the coarse face (hanging_node_constraints()). */
     void
     distribute(const FaceFilter &released = FaceFilter());
 
@@ -76,7 +79,16 @@ namespace amfrac
       return owned_dofs;
     }
 
-    /** Reduced indices on locally owned cells, plus the owned ones. */
+    /** Hanging-node constraints on the reduced numbering (all lines, on
+     * every rank). */
+    const AffineConstraints<double> &
+    hanging_node_constraints() const
+    {
+      return hanging_constraints;
+    }
+
+    /** Reduced indices on locally owned cells, the owned ones, and those
+     * that hanging constraints of these refer to. */
     const IndexSet &
     locally_relevant_dofs() const
     {
@@ -126,6 +138,7 @@ namespace amfrac
     std::vector<Point<dim>>                support_points;
     std::vector<unsigned char>             components;
     IndexSet                               owned_dofs;
+    AffineConstraints<double>              hanging_constraints;
     IndexSet                               relevant_dofs;
 
     /** Union-find over copies: tie the copies of two faces that share a
@@ -134,6 +147,15 @@ namespace amfrac
     tie_faces(const FaceFilter                     &released,
               const std::vector<Point<dim>>        &copy_position,
               std::vector<types::global_dof_index> &parent) const;
+
+    /** Call @p callback(copy, weights) for every fine copy on a hanging
+     * face that is not released: weights are (coarse copy, shape value)
+     * pairs, a single pair when the copy sits on a coarse node. */
+    template <typename Callback>
+    void
+    for_each_hanging_copy(const FaceFilter              &released,
+                          const std::vector<Point<dim>> &copy_position,
+                          const Callback                &callback) const;
 
     void
     number_groups(std::vector<types::global_dof_index> &parent,

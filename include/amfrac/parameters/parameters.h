@@ -29,6 +29,8 @@ namespace amfrac
       unsigned int        elements_per_ply;
       unsigned int        global_refinements;
       double              mesh_distortion;
+      std::string         refinement_region;
+      unsigned int        region_refinements;
 
       static void
       declare_parameters(ParameterHandler &prm);
