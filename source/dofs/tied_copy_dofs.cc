@@ -86,25 +86,28 @@ namespace amfrac
     tie_faces(released, copy_position, parent);
     // A fine copy on a hanging face that sits on a node of the coarse
     // neighbour is that node (a union); the others interpolate the coarse
-    // face (a constraint on the reduced numbering).
+    // face (a constraint on the reduced numbering, built after numbering).
+    std::vector<std::pair<types::global_dof_index, HangingWeights>> hanging;
     for_each_hanging_copy(released,
                           copy_position,
                           [&](const auto copy, const auto &weights) {
                             if (weights.size() == 1)
                               unite(parent, copy, weights[0].first);
+                            else
+                              hanging.emplace_back(copy, weights);
                           });
     number_groups(parent, copy_position);
 
     hanging_constraints.clear();
-    for_each_hanging_copy(
-      released, copy_position, [&](const auto copy, const auto &weights) {
+    for (const auto &[copy, weights] : hanging)
+      {
         const auto line = copy_to_reduced[copy];
-        if (weights.size() == 1 || hanging_constraints.is_constrained(line))
-          return;
+        if (hanging_constraints.is_constrained(line))
+          continue;
         hanging_constraints.add_line(line);
         for (const auto &[coarse, weight] : weights)
           hanging_constraints.add_entry(line, copy_to_reduced[coarse], weight);
-      });
+      }
     hanging_constraints.close();
     // The coarse dofs that a relevant hanging dof depends on are relevant
     // too: this rank writes into their rows.
@@ -132,7 +135,7 @@ namespace amfrac
     const MappingQ1<dim>                 mapping;
     const unsigned int                   n_local = fe->n_dofs_per_cell();
     std::vector<types::global_dof_index> fine(n_local), coarse(n_local);
-    std::vector<std::pair<types::global_dof_index, double>> weights;
+    HangingWeights                       weights;
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
         {

@@ -20,6 +20,7 @@ namespace amfrac
     , laminate(prm.geometry, prm.materials)
     , plies(make_ply_table<dim>(laminate, prm.materials))
     , dof_layer(triangulation, prm.discretization.degree)
+    , assembler(dof_layer, plies)
   {
     TimerOutput::Scope scope(timer, "setup");
     make_laminate_mesh(parameters.geometry, laminate, triangulation);
@@ -120,28 +121,19 @@ namespace amfrac
 
   template <int dim>
   void
-  Simulator<dim>::make_constraints(const double t)
+  Simulator<dim>::collect_supports()
   {
     // Every rank scans all boundary cells of the (replicated) mesh, so that
-    // a dof is constrained consistently whichever rank sees it.
-    constraints.clear();
-    constraints.reinit(dof_layer.locally_relevant_dofs());
-    // Hanging nodes first: a hanging node on a supported face stays
-    // constrained to its coarse face (its value follows from the support).
-    for (const auto &line : dof_layer.hanging_node_constraints().get_lines())
-      if (dof_layer.locally_relevant_dofs().is_element(line.index))
-        {
-          constraints.add_line(line.index);
-          constraints.add_entries(line.index, line.entries);
-        }
-    supported_dofs.assign(prescribed.size(), {});
-    const auto                          &fe = dof_layer.get_fe();
-    std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
-    std::vector<bool>                    visited(dof_layer.n_dofs(), false);
+    // a dof is constrained consistently whichever rank sees it. The set does
+    // not change during a run (Where is evaluated at t = 0), so this runs
+    // once; each step only evaluates the prescribed values.
+    supports.assign(prescribed.size(), {});
+    std::vector<types::global_dof_index> indices(
+      dof_layer.get_fe().n_dofs_per_cell());
+    std::vector<bool> visited(dof_layer.n_dofs(), false);
     for (unsigned int k = 0; k < prescribed.size(); ++k)
       {
         const auto &condition = prescribed[k];
-        condition.value->set_time(t);
         std::fill(visited.begin(), visited.end(), false);
         for (const auto &cell :
              dof_layer.copy_handler().active_cell_iterators())
@@ -157,19 +149,44 @@ namespace amfrac
                   const unsigned int c   = dof_layer.component(dof);
                   if (visited[dof] || !condition.components[c])
                     continue;
-                  visited[dof]        = true;
-                  const Point<dim> &p = dof_layer.support_point(dof);
-                  if (condition.where && condition.where->value(p, c) == 0.)
-                    continue;
-                  if (dof_layer.locally_owned_dofs().is_element(dof))
-                    supported_dofs[k].push_back(dof);
-                  if (!dof_layer.locally_relevant_dofs().is_element(dof)
-                      || constraints.is_constrained(dof))
-                    continue;
-                  constraints.add_line(dof);
-                  constraints.set_inhomogeneity(dof,
-                                                condition.value->value(p, c));
+                  visited[dof] = true;
+                  if (!condition.where
+                      || condition.where->value(dof_layer.support_point(dof), c)
+                           != 0.)
+                    supports[k].push_back(dof);
                 }
+            }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::make_constraints(const double t)
+  {
+    constraints.clear();
+    constraints.reinit(dof_layer.locally_relevant_dofs());
+    // Hanging nodes first: a hanging node on a supported face stays
+    // constrained to its coarse face (its value follows from the support).
+    for (const auto &line : dof_layer.hanging_node_constraints().get_lines())
+      if (dof_layer.locally_relevant_dofs().is_element(line.index))
+        {
+          constraints.add_line(line.index);
+          constraints.add_entries(line.index, line.entries);
+        }
+    for (unsigned int k = 0; k < prescribed.size(); ++k)
+      {
+        prescribed[k].value->set_time(t);
+        for (const auto dof : supports[k])
+          if (dof_layer.locally_relevant_dofs().is_element(dof)
+              && !constraints.is_constrained(dof))
+            {
+              constraints.add_line(dof);
+              constraints.set_inhomogeneity(
+                dof,
+                prescribed[k].value->value(dof_layer.support_point(dof),
+                                           dof_layer.component(dof)));
             }
       }
     constraints.close();
@@ -263,8 +280,8 @@ namespace amfrac
           << " MB on each rank" << std::endl;
     prepare_output_directory();
 
-    const ElasticAssembler<dim> assembler(dof_layer, plies);
-    LinearSolver                solver(parameters.linear_solver);
+    collect_supports();
+    LinearSolver solver(parameters.linear_solver);
     solution.reinit(dof_layer.locally_owned_dofs(), comm);
     system_rhs.reinit(dof_layer.locally_owned_dofs(), comm);
     relevant_solution.reinit(dof_layer.locally_owned_dofs(),
@@ -323,8 +340,7 @@ namespace amfrac
     TimerOutput::Scope scope(timer, "postprocess");
     dof_layer.expand(relevant_solution, copy_values);
 
-    const ElasticAssembler<dim> assembler(dof_layer, plies);
-    Vector                      residual;
+    Vector residual;
     residual.reinit(dof_layer.locally_owned_dofs(),
                     dof_layer.locally_relevant_dofs(),
                     comm,
@@ -341,8 +357,9 @@ namespace amfrac
     for (unsigned int k = 0; k < prescribed.size(); ++k)
       {
         std::array<double, dim> force{};
-        for (const auto i : supported_dofs[k])
-          force[dof_layer.component(i)] += residual(i);
+        for (const auto i : supports[k])
+          if (dof_layer.locally_owned_dofs().is_element(i))
+            force[dof_layer.component(i)] += residual(i);
         for (unsigned int d = 0; d < dim; ++d)
           if (prescribed[k].components[d])
             row.emplace_back("reaction_" + prescribed[k].name + "_" + axis[d],

@@ -148,6 +148,10 @@ namespace amfrac
               const std::vector<Point<dim>>        &copy_position,
               std::vector<types::global_dof_index> &parent) const;
 
+    /** (coarse copy, shape value) pairs that a hanging copy interpolates. */
+    using HangingWeights
+      = std::vector<std::pair<types::global_dof_index, double>>;
+
     /** Call @p callback(copy, weights) for every fine copy on a hanging
      * face that is not released: weights are (coarse copy, shape value)
      * pairs, a single pair when the copy sits on a coarse node. */

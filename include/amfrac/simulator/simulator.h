@@ -94,6 +94,7 @@ namespace amfrac
     Laminate                                 laminate;
     std::vector<PlyProperties<dim>>          plies;
     TiedCopyDoFs<dim>                        dof_layer;
+    ElasticAssembler<dim>                    assembler;
     Loads<dim>                               loads;
     std::vector<PrescribedDisplacement<dim>> prescribed;
     std::unique_ptr<PointProbe<dim>>         probe;
@@ -101,8 +102,9 @@ namespace amfrac
     std::unique_ptr<FieldOutput<dim>>        field_output;
 
     AffineConstraints<double> constraints;
-    /** Per prescribed condition: the owned reduced dofs it constrains. */
-    std::vector<std::vector<types::global_dof_index>> supported_dofs;
+    /** Per prescribed condition: the reduced dofs on its face (and Where)
+     * of its components, on the whole mesh. */
+    std::vector<std::vector<types::global_dof_index>> supports;
     TrilinosWrappers::SparseMatrix                    system_matrix;
     Vector                                            solution;
     Vector                                            relevant_solution;
@@ -111,6 +113,8 @@ namespace amfrac
 
     void
     build_loads_and_supports();
+    void
+    collect_supports();
     void
     make_constraints(const double t);
     std::vector<std::vector<double>>
