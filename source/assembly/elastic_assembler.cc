@@ -51,10 +51,23 @@ namespace amfrac
   {
     const MPI_Comm comm
       = dofs.copy_handler().get_triangulation().get_communicator();
-    TrilinosWrappers::SparsityPattern    pattern(dofs.locally_owned_dofs(),
+    TrilinosWrappers::SparsityPattern pattern(dofs.locally_owned_dofs(),
                                               dofs.locally_owned_dofs(),
                                               dofs.locally_relevant_dofs(),
                                               comm);
+    add_couplings(constraints, pattern);
+    pattern.compress();
+    matrix.reinit(pattern);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticAssembler<dim>::add_couplings(
+    const AffineConstraints<double>   &constraints,
+    TrilinosWrappers::SparsityPattern &pattern) const
+  {
     std::vector<types::global_dof_index> indices(
       dofs.get_fe().n_dofs_per_cell());
     for (const auto &cell : dofs.copy_handler().active_cell_iterators())
@@ -63,8 +76,32 @@ namespace amfrac
           dofs.get_dof_indices(cell, indices);
           constraints.add_entries_local_to_global(indices, pattern, false);
         }
-    pattern.compress();
-    matrix.reinit(pattern);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticAssembler<dim>::assemble_load(const Loads<dim> &loads,
+                                       const double      t,
+                                       Vector           &f) const
+  {
+    f = 0;
+    if (loads.empty())
+      return;
+    const unsigned int     n = dofs.get_fe().n_dofs_per_cell();
+    Scratch                scratch(dofs.get_fe(), quadrature_degree);
+    dealii::Vector<double> cell_f(n);
+    std::vector<types::global_dof_index> indices(n);
+    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          scratch.fe_values.reinit(cell);
+          dofs.get_dof_indices(cell, indices);
+          cell_load(scratch, cell, loads, t, cell_f);
+          f.add(indices, cell_f);
+        }
+    f.compress(VectorOperation::add);
   }
 
 

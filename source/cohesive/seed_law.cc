@@ -87,8 +87,10 @@ namespace amfrac
       const auto [S_N, dS_N] = softening(r.history.kappa, g0N, p.gmax_N());
       const auto [S_T, dS_T] = softening(r.history.kappa, g0T, p.gmax_T());
 
-      // Normal: penalty contact in compression, damaged bond in tension.
-      if (gN <= 0)
+      // Normal: penalty contact in compression, damaged bond in tension. A
+      // closed gap (g_N = 0) counts as open, so that a pre-crack at rest has
+      // no normal stiffness and Newton does not start from a bonded crack.
+      if (gN < 0)
         {
           r.traction[0]   = p.contact_penalty * gN;
           r.tangent[0][0] = p.contact_penalty;
@@ -129,7 +131,7 @@ namespace amfrac
         = r.traction[0] < 0 ? -p.friction * r.tangent[0][0] : 0.;
       const Tensor<1, dim - 1> trial = p.stick_penalty * (gT - r.history.slip);
       const double             norm  = trial.norm();
-      if (sigma_f == 0 && norm > 0)
+      if (sigma_f == 0)
         {
           // Open or unloaded crack: no friction, the faces slide freely.
           r.history.slip = gT;

@@ -96,7 +96,7 @@ namespace amfrac
                             else
                               hanging.emplace_back(copy, weights);
                           });
-    number_groups(parent, copy_position);
+    number_groups(parent, copy_position, released);
 
     hanging_constraints.clear();
     for (const auto &[copy, weights] : hanging)
@@ -209,7 +209,8 @@ namespace amfrac
   template <int dim>
   void
   TiedCopyDoFs<dim>::number_groups(std::vector<types::global_dof_index> &parent,
-                                   const std::vector<Point<dim>> &copy_position)
+                                   const std::vector<Point<dim>> &copy_position,
+                                   const FaceFilter              &released)
   {
     const MPI_Comm     comm    = triangulation.get_communicator();
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
@@ -268,6 +269,17 @@ namespace amfrac
           cell->get_dof_indices(local);
           for (const auto c : local)
             relevant.push_back(copy_to_reduced[c]);
+          // Interface elements on a released face couple the cell with its
+          // neighbour: this rank assembles into the neighbour's rows too.
+          if (released)
+            for (const unsigned int f : cell->face_indices())
+              if (!cell->at_boundary(f) && !cell->neighbor(f)->has_children()
+                  && released(cell, f))
+                {
+                  cell->neighbor(f)->get_dof_indices(local);
+                  for (const auto c : local)
+                    relevant.push_back(copy_to_reduced[c]);
+                }
         }
     std::sort(relevant.begin(), relevant.end());
     relevant.erase(std::unique(relevant.begin(), relevant.end()),

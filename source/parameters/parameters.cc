@@ -619,6 +619,277 @@ namespace amfrac
 
 
     void
+    CohesiveInterfaces::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Cohesive interfaces");
+      prm.declare_entry("Interfaces",
+                        "",
+                        Patterns::Anything(),
+                        "Ply interfaces bonded by the cohesive law (each ply "
+                        "becomes a discrete body): empty for none, 'all', or "
+                        "a list of indices, where interface k lies between "
+                        "ply k and ply k+1 (plies counted from 0 at the "
+                        "bottom).");
+      prm.declare_entry("Law",
+                        "seed",
+                        Patterns::Selection("seed"),
+                        "Traction-separation law: 'seed' is the bilinear "
+                        "mixed-mode law of Mohammadi & Forouzan-sepehr, eqs. "
+                        "(1)-(13), with penalty contact and Coulomb "
+                        "friction after debonding.");
+      prm.declare_entry("Normal strength",
+                        "60",
+                        Patterns::Double(),
+                        "Mode I onset traction sigma_N in MPa.");
+      prm.declare_entry("Shear strength",
+                        "90",
+                        Patterns::Double(),
+                        "Mode II onset traction sigma_T in MPa.");
+      prm.declare_entry("Mode I fracture energy",
+                        "0.3",
+                        Patterns::Double(),
+                        "G_Ic in N/mm (= kJ/m^2).");
+      prm.declare_entry("Mode II fracture energy",
+                        "0.8",
+                        Patterns::Double(),
+                        "G_IIc in N/mm (= kJ/m^2).");
+      prm.declare_entry("Normal stiffness",
+                        "1e5",
+                        Patterns::Double(),
+                        "Penalty stiffness E_N of the intact bond in "
+                        "N/mm^3 (Turon et al.: about 50 E3 / ply "
+                        "thickness).");
+      prm.declare_entry("Shear stiffness",
+                        "0",
+                        Patterns::Double(),
+                        "E_T in N/mm^3; 0 means equal to Normal stiffness.");
+      prm.declare_entry("Contact penalty",
+                        "0",
+                        Patterns::Double(),
+                        "alpha_N in N/mm^3 against interpenetration; 0 "
+                        "means equal to Normal stiffness.");
+      prm.declare_entry("Stick penalty",
+                        "0",
+                        Patterns::Double(),
+                        "alpha_T in N/mm^3 of the stick phase of friction "
+                        "after debonding; 0 means equal to Shear "
+                        "stiffness.");
+      prm.declare_entry("Friction coefficient",
+                        "0",
+                        Patterns::Double(),
+                        "Coulomb mu between debonded faces in contact.");
+      prm.declare_entry("Viscosity",
+                        "0",
+                        Patterns::Double(0),
+                        "Viscous regularization (Gao & Bower 2004) of the "
+                        "bonded phase, in MPa per (mm per unit of time t): "
+                        "adds the traction Viscosity * (g - g_old) / dt. "
+                        "A small value lets cut-back steps pass the local "
+                        "snap-backs of a softening interface; its "
+                        "dissipation is reported apart (viscous_i<k>).");
+      prm.declare_entry("Quadrature",
+                        "lobatto",
+                        Patterns::Selection("lobatto|gauss"),
+                        "Interface integration: 'lobatto' (nodal, "
+                        "Newton-Cotes-like) avoids the traction "
+                        "oscillations of stiff penalties; 'gauss' is the "
+                        "usual Gauss rule.");
+      prm.declare_entry("Pre-crack interfaces",
+                        "",
+                        Patterns::Anything(),
+                        "Cohesive interfaces that carry an initial "
+                        "delamination (list of indices).");
+      prm.declare_entry("Pre-crack region",
+                        "",
+                        Patterns::Anything(),
+                        "Expression of x, y, (z): nonzero where the "
+                        "pre-crack interfaces are fully debonded from the "
+                        "start (contact and friction stay active), e.g. "
+                        "x < 30.");
+      prm.leave_subsection();
+    }
+
+
+
+    namespace
+    {
+      /** Parse a list of interface indices below @p n_interfaces. */
+      std::vector<unsigned int>
+      parse_interface_list(const std::string &text,
+                           const unsigned int n_interfaces,
+                           const std::string &parameter)
+      {
+        std::vector<unsigned int> result;
+        if (Utilities::trim(text) == "all")
+          {
+            for (unsigned int k = 0; k < n_interfaces; ++k)
+              result.push_back(k);
+            return result;
+          }
+        for (const std::string &entry : Utilities::split_string_list(text))
+          {
+            std::size_t end   = 0;
+            long        value = -1;
+            try
+              {
+                value = std::stol(entry, &end);
+              }
+            catch (...)
+              {
+                end = 0;
+              }
+            require(end == entry.size() && value >= 0,
+                    parameter,
+                    "'" + entry + "' is not an interface index");
+            require(value < long(n_interfaces),
+                    parameter,
+                    "interface " + entry + " does not exist: the laminate "
+                      + "has " + std::to_string(n_interfaces)
+                      + " ply interfaces (0 to "
+                      + std::to_string(long(n_interfaces) - 1) + ")");
+            result.push_back(value);
+          }
+        std::sort(result.begin(), result.end());
+        result.erase(std::unique(result.begin(), result.end()), result.end());
+        return result;
+      }
+    } // namespace
+
+
+
+    void
+    CohesiveInterfaces::parse_parameters(ParameterHandler  &prm,
+                                         const unsigned int n_plies)
+    {
+      const std::string section = "Cohesive interfaces/";
+      prm.enter_subsection("Cohesive interfaces");
+      interfaces       = parse_interface_list(prm.get("Interfaces"),
+                                        n_plies - 1,
+                                        section + "Interfaces");
+      normal_strength  = prm.get_double("Normal strength");
+      shear_strength   = prm.get_double("Shear strength");
+      G_Ic             = prm.get_double("Mode I fracture energy");
+      G_IIc            = prm.get_double("Mode II fracture energy");
+      normal_stiffness = prm.get_double("Normal stiffness");
+      shear_stiffness  = prm.get_double("Shear stiffness");
+      contact_penalty  = prm.get_double("Contact penalty");
+      stick_penalty    = prm.get_double("Stick penalty");
+      friction         = prm.get_double("Friction coefficient");
+      viscosity        = prm.get_double("Viscosity");
+      lobatto          = prm.get("Quadrature") == "lobatto";
+      precrack_interfaces
+        = parse_interface_list(prm.get("Pre-crack interfaces"),
+                               n_plies - 1,
+                               section + "Pre-crack interfaces");
+      precrack_region = Utilities::trim(prm.get("Pre-crack region"));
+      prm.leave_subsection();
+
+      const std::pair<const char *, double> positive[]
+        = {{"Normal strength", normal_strength},
+           {"Shear strength", shear_strength},
+           {"Mode I fracture energy", G_Ic},
+           {"Mode II fracture energy", G_IIc},
+           {"Normal stiffness", normal_stiffness}};
+      for (const auto &[name, value] : positive)
+        require(value > 0, section + name, "must be positive");
+      const std::pair<const char *, double> optional[]
+        = {{"Shear stiffness", shear_stiffness},
+           {"Contact penalty", contact_penalty},
+           {"Stick penalty", stick_penalty}};
+      for (const auto &[name, value] : optional)
+        require(value >= 0,
+                section + name,
+                "must be positive (or 0 for the default)");
+      require(friction >= 0,
+              section + "Friction coefficient",
+              "must not be negative");
+      if (shear_stiffness == 0)
+        shear_stiffness = normal_stiffness;
+      if (contact_penalty == 0)
+        contact_penalty = normal_stiffness;
+      if (stick_penalty == 0)
+        stick_penalty = shear_stiffness;
+      require(2 * G_Ic / normal_strength > normal_strength / normal_stiffness,
+              section + "Mode I fracture energy",
+              "the final opening 2 G_Ic / Normal strength must exceed the "
+              "onset opening Normal strength / Normal stiffness: raise "
+              "G_Ic or Normal stiffness");
+      require(2 * G_IIc / shear_strength > shear_strength / shear_stiffness,
+              section + "Mode II fracture energy",
+              "the final sliding 2 G_IIc / Shear strength must exceed the "
+              "onset sliding Shear strength / Shear stiffness: raise "
+              "G_IIc or Shear stiffness");
+      for (const unsigned int k : precrack_interfaces)
+        require(std::binary_search(interfaces.begin(), interfaces.end(), k),
+                section + "Pre-crack interfaces",
+                "interface " + std::to_string(k)
+                  + " is not listed in Interfaces");
+      require(precrack_interfaces.empty() || !precrack_region.empty(),
+              section + "Pre-crack region",
+              "is empty, but Pre-crack interfaces are given");
+    }
+
+
+
+    void
+    NonlinearSolver::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Nonlinear solver");
+      prm.declare_entry("Max iterations",
+                        "20",
+                        Patterns::Integer(1),
+                        "Newton iterations per load step before the step "
+                        "is cut back.");
+      prm.declare_entry("Residual tolerance",
+                        "1e-8",
+                        Patterns::Double(0),
+                        "Converged when the residual norm of the free "
+                        "unknowns is below this times the norm of the "
+                        "external forces (reactions and loads).");
+      prm.declare_entry("Line search",
+                        "true",
+                        Patterns::Bool(),
+                        "Backtrack along the Newton direction until the "
+                        "residual decreases.");
+      prm.declare_entry("Minimum step fraction",
+                        "1e-3",
+                        Patterns::Double(0, 1),
+                        "Smallest load step, as a fraction of End time / "
+                        "Number of steps; a step that fails below it ends "
+                        "the run with an error (the last converged state "
+                        "is written).");
+      prm.declare_entry("Easy step iterations",
+                        "4",
+                        Patterns::Integer(1),
+                        "After a cut-back, the step doubles again (up to "
+                        "the nominal step) when a step converges in at "
+                        "most this many iterations.");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    NonlinearSolver::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Nonlinear solver");
+      max_iterations        = prm.get_integer("Max iterations");
+      tolerance             = prm.get_double("Residual tolerance");
+      line_search           = prm.get_bool("Line search");
+      minimum_step_fraction = prm.get_double("Minimum step fraction");
+      easy_iterations       = prm.get_integer("Easy step iterations");
+      prm.leave_subsection();
+      require(tolerance > 0,
+              "Nonlinear solver/Residual tolerance",
+              "must be positive");
+      require(minimum_step_fraction > 0,
+              "Nonlinear solver/Minimum step fraction",
+              "must be positive");
+    }
+
+
+
+    void
     Parameters::declare_parameters(ParameterHandler &prm)
     {
       prm.declare_entry("Dimension",
@@ -631,6 +902,8 @@ namespace amfrac
       Discretization::declare_parameters(prm);
       BoundaryConditions::declare_parameters(prm);
       LinearSolver::declare_parameters(prm);
+      CohesiveInterfaces::declare_parameters(prm);
+      NonlinearSolver::declare_parameters(prm);
       Time::declare_parameters(prm);
       Output::declare_parameters(prm);
     }
@@ -648,6 +921,8 @@ namespace amfrac
       discretization.parse_parameters(prm);
       boundary_conditions.parse_parameters(prm, dimension);
       linear_solver.parse_parameters(prm);
+      cohesive.parse_parameters(prm, geometry.plies.size());
+      nonlinear_solver.parse_parameters(prm);
       time.parse_parameters(prm);
       output.parse_parameters(prm, dimension);
     }

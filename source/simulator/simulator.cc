@@ -24,7 +24,20 @@ namespace amfrac
   {
     TimerOutput::Scope scope(timer, "setup");
     make_laminate_mesh(parameters.geometry, laminate, triangulation);
-    dof_layer.distribute();
+    if (!parameters.cohesive.interfaces.empty())
+      interfaces = std::make_unique<CohesiveInterfaces<dim>>(prm.cohesive);
+    dof_layer.distribute(interfaces ? interfaces->released_faces() :
+                                      typename TiedCopyDoFs<dim>::FaceFilter());
+    if (interfaces)
+      {
+        const auto cracked
+          = interfaces->setup(dof_layer,
+                              parameters.boundary_conditions.constants);
+        if (cracked == 0 && !parameters.cohesive.precrack_interfaces.empty())
+          pcout << "amfrac: warning: parameter <Cohesive interfaces/Pre-crack "
+                   "region> selects no point of the pre-crack interfaces"
+                << std::endl;
+      }
     build_loads_and_supports();
 
     std::vector<Point<dim>> points;
@@ -163,7 +176,9 @@ namespace amfrac
 
   template <int dim>
   void
-  Simulator<dim>::make_constraints(const double t)
+  Simulator<dim>::make_constraints(const double               t,
+                                   AffineConstraints<double> &constraints,
+                                   const bool                 homogeneous) const
   {
     constraints.clear();
     constraints.reinit(dof_layer.locally_relevant_dofs());
@@ -183,10 +198,11 @@ namespace amfrac
               && !constraints.is_constrained(dof))
             {
               constraints.add_line(dof);
-              constraints.set_inhomogeneity(
-                dof,
-                prescribed[k].value->value(dof_layer.support_point(dof),
-                                           dof_layer.component(dof)));
+              if (!homogeneous)
+                constraints.set_inhomogeneity(
+                  dof,
+                  prescribed[k].value->value(dof_layer.support_point(dof),
+                                             dof_layer.component(dof)));
             }
       }
     constraints.close();
@@ -265,6 +281,18 @@ namespace amfrac
   void
   Simulator<dim>::run()
   {
+    if (interfaces)
+      run_newton();
+    else
+      run_linear();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::run_linear()
+  {
     if (prescribed.empty())
       throw InputError("Boundary conditions",
                        "no face has Type = displacement, so the laminate "
@@ -295,7 +323,7 @@ namespace amfrac
         const double t = step * dt;
         {
           TimerOutput::Scope scope(timer, "constraints");
-          make_constraints(t);
+          make_constraints(t, constraints, false);
         }
         if (step == 1)
           {
@@ -326,7 +354,18 @@ namespace amfrac
           pcout << "  step " << step << " t=" << t << ": " << report.iterations
                 << " iteration(s), " << report.seconds << " s" << std::endl;
         }
-        postprocess(step, t);
+        Vector residual;
+        residual.reinit(dof_layer.locally_owned_dofs(),
+                        dof_layer.locally_relevant_dofs(),
+                        comm,
+                        /*vector_writable=*/true);
+        const auto energies
+          = assembler.compute_residual(loads, t, relevant_solution, residual);
+        postprocess(step,
+                    t,
+                    residual,
+                    {{"strain_energy", energies.strain_energy},
+                     {"load_work", energies.load_work}});
       }
     timer.print_wall_time_statistics(comm);
   }
@@ -334,25 +373,47 @@ namespace amfrac
 
 
   template <int dim>
+  std::vector<double>
+  Simulator<dim>::conjugate_forces(const double t, const Vector &residual) const
+  {
+    // dg/dt by a one-sided difference: exact for the usual linear ramps.
+    const double        dt = 1e-6 * parameters.time.end_time;
+    std::vector<double> forces(prescribed.size(), 0.);
+    for (unsigned int k = 0; k < prescribed.size(); ++k)
+      {
+        Function<dim> &g = *prescribed[k].value;
+        for (const auto i : supports[k])
+          if (dof_layer.locally_owned_dofs().is_element(i))
+            {
+              const Point<dim>  &p = dof_layer.support_point(i);
+              const unsigned int c = dof_layer.component(i);
+              g.set_time(t);
+              const double now = g.value(p, c);
+              g.set_time(t - dt);
+              forces[k] += residual(i) * (now - g.value(p, c)) / dt;
+            }
+        g.set_time(t);
+        forces[k] = Utilities::MPI::sum(forces[k], comm);
+      }
+    return forces;
+  }
+
+
+
+  template <int dim>
   void
-  Simulator<dim>::postprocess(const unsigned int step, const double t)
+  Simulator<dim>::postprocess(
+    const unsigned int                                 step,
+    const double                                       t,
+    const Vector                                      &residual,
+    const std::vector<std::pair<std::string, double>> &columns)
   {
     TimerOutput::Scope scope(timer, "postprocess");
     dof_layer.expand(relevant_solution, copy_values);
 
-    Vector residual;
-    residual.reinit(dof_layer.locally_owned_dofs(),
-                    dof_layer.locally_relevant_dofs(),
-                    comm,
-                    /*vector_writable=*/true);
-    const auto energies
-      = assembler.compute_residual(loads, t, relevant_solution, residual);
-
     std::vector<std::pair<std::string, double>> row
-      = {{"step", step},
-         {"time", t},
-         {"strain_energy", energies.strain_energy},
-         {"load_work", energies.load_work}};
+      = {{"step", step}, {"time", t}};
+    row.insert(row.end(), columns.begin(), columns.end());
     const char *axis = "xyz";
     for (unsigned int k = 0; k < prescribed.size(); ++k)
       {
@@ -365,6 +426,9 @@ namespace amfrac
             row.emplace_back("reaction_" + prescribed[k].name + "_" + axis[d],
                              Utilities::MPI::sum(force[d], comm));
       }
+    const auto conjugate = conjugate_forces(t, residual);
+    for (unsigned int k = 0; k < prescribed.size(); ++k)
+      row.emplace_back("force_" + prescribed[k].name, conjugate[k]);
     const auto values = probe->evaluate(copy_values);
     for (unsigned int p = 0; p < values.size(); ++p)
       {
@@ -380,7 +444,7 @@ namespace amfrac
 
     if (field_output
         && (step % parameters.output.every_n_steps == 0
-            || step == parameters.time.n_steps))
+            || t >= parameters.time.end_time * (1 - 1e-12)))
       field_output->write(step, t, copy_values);
   }
 

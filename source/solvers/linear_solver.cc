@@ -5,6 +5,7 @@
 #include <amfrac/solvers/linear_solver.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_gmres.h>
 #include <ml_MultiLevelPreconditioner.h>
 #include <sstream>
 
@@ -45,6 +46,7 @@ namespace amfrac
         // singular stiffness (a laminate free to move) gets a message that
         // names the likely cause. (MatrixProperty = SPD and the METIS
         // ordering were tried: no change in MUMPS' flops or time here.)
+        direct.reset(); // it refers to the problem
         direct_problem = std::make_unique<Epetra_LinearProblem>();
         direct_problem->SetOperator(
           const_cast<Epetra_CrsMatrix *>(&system_matrix.trilinos_matrix()));
@@ -58,13 +60,7 @@ namespace amfrac
                                + " is not available"));
         AssertThrow(direct->SymbolicFactorization() == 0,
                     ExcMessage("symbolic factorization failed"));
-        const int status = direct->NumericFactorization();
-        AssertThrow(status == 0,
-                    ExcMessage("the stiffness matrix could not be factorized "
-                               "(error "
-                               + std::to_string(status)
-                               + "): is the laminate free to move as a rigid "
-                                 "body? Check the prescribed displacements."));
+        factorize();
         return timer.wall_time();
       }
 
@@ -106,6 +102,35 @@ namespace amfrac
     ml.set("null space: vectors", null_space_storage.data());
     amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
     amg->initialize(system_matrix.trilinos_matrix(), ml);
+    return timer.wall_time();
+  }
+
+
+
+  void
+  LinearSolver::factorize()
+  {
+    const int status = direct->NumericFactorization();
+    if (status != 0)
+      throw CollectiveError(
+        "the stiffness matrix could not be factorized (error "
+        + std::to_string(status)
+        + "): is the laminate (or a ply cut loose by a debonded interface) "
+          "free to move as a rigid body? Check the prescribed "
+          "displacements.");
+  }
+
+
+
+  double
+  LinearSolver::update_values()
+  {
+    Assert(matrix != nullptr, ExcInternalError());
+    Timer timer;
+    if (direct)
+      factorize();
+    else
+      amg->reinit();
     return timer.wall_time();
   }
 
@@ -153,20 +178,22 @@ namespace amfrac
             report.seconds = timer.wall_time();
             return report;
           }
-        SolverControl    control(parameters.max_iterations,
+        SolverControl control(parameters.max_iterations,
                               parameters.tolerance * norm_b);
-        SolverCG<Vector> cg(control);
         try
           {
-            cg.solve(*matrix, x, b, *amg);
+            if (symmetric)
+              SolverCG<Vector>(control).solve(*matrix, x, b, *amg);
+            else
+              SolverGMRES<Vector>(control).solve(*matrix, x, b, *amg);
           }
         catch (const SolverControl::NoConvergence &e)
           {
             std::ostringstream message;
-            message << "linear solver (CG + AMG) did not converge in "
-                    << e.last_step << " iterations: residual "
-                    << e.last_residual << " against the target "
-                    << control.tolerance()
+            message << "linear solver (" << (symmetric ? "CG" : "GMRES")
+                    << " + AMG) did not converge in " << e.last_step
+                    << " iterations: residual " << e.last_residual
+                    << " against the target " << control.tolerance()
                     << " (raise Linear solver/Max iterations or use Solver "
                        "= direct)";
             throw CollectiveError(message.str());

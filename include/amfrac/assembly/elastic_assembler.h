@@ -6,6 +6,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 namespace amfrac
@@ -25,6 +26,11 @@ namespace amfrac
     ElasticAssembler(const TiedCopyDoFs<dim>               &dofs,
                      const std::vector<PlyProperties<dim>> &plies);
 
+    /** Add the cell couplings under @p constraints to @p pattern. */
+    void
+    add_couplings(const AffineConstraints<double>   &constraints,
+                  TrilinosWrappers::SparsityPattern &pattern) const;
+
     /** Size @p matrix for the cell couplings under @p constraints. */
     void
     reinit_matrix(const AffineConstraints<double> &constraints,
@@ -43,6 +49,10 @@ namespace amfrac
                  const double                     t,
                  const AffineConstraints<double> &constraints,
                  Vector                          &rhs) const;
+
+    /** The load vector f(t) without constraints. */
+    void
+    assemble_load(const Loads<dim> &loads, const double t, Vector &f) const;
 
     struct Energies
     {

@@ -21,6 +21,12 @@ namespace amfrac
     std::map<types::boundary_id, std::shared_ptr<Function<dim>>> pressures;
 
     bool
+    empty() const
+    {
+      return !body_force && tractions.empty() && pressures.empty();
+    }
+
+    bool
     on_face(const types::boundary_id id) const
     {
       return tractions.count(id) > 0 || pressures.count(id) > 0;

@@ -87,8 +87,9 @@ namespace amfrac
       return hanging_constraints;
     }
 
-    /** Reduced indices on locally owned cells, the owned ones, and those
-     * that hanging constraints of these refer to. */
+    /** Reduced indices on locally owned cells and on their neighbours
+     * across released faces, the owned ones, and those that hanging
+     * constraints of these refer to. */
     const IndexSet &
     locally_relevant_dofs() const
     {
@@ -163,7 +164,8 @@ namespace amfrac
 
     void
     number_groups(std::vector<types::global_dof_index> &parent,
-                  const std::vector<Point<dim>>        &copy_position);
+                  const std::vector<Point<dim>>        &copy_position,
+                  const FaceFilter                     &released);
   };
 
 

@@ -153,6 +153,52 @@ namespace amfrac
       parse_parameters(ParameterHandler &prm, const unsigned int dim);
     };
 
+    /** `subsection Cohesive interfaces`: which ply interfaces are bonded
+     * by the seed's cohesive law, its data, and the pre-crack. */
+    struct CohesiveInterfaces
+    {
+      /** Interface k lies between ply k and ply k + 1 (plies are counted
+       * from 0 at the bottom). Sorted, unique. */
+      std::vector<unsigned int> interfaces;
+      double                    normal_strength;
+      double                    shear_strength;
+      double                    G_Ic;
+      double                    G_IIc;
+      double                    normal_stiffness;
+      double                    shear_stiffness;
+      double                    contact_penalty;
+      double                    stick_penalty;
+      double                    friction;
+      /** Gao-Bower viscosity of the bonded phase (0: none). */
+      double viscosity;
+      /** Gauss-Lobatto (nodal) interface quadrature instead of Gauss. */
+      bool lobatto;
+      /** Interfaces that carry the pre-crack, and where it is. */
+      std::vector<unsigned int> precrack_interfaces;
+      std::string               precrack_region;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm, const unsigned int n_plies);
+    };
+
+    /** `subsection Nonlinear solver`: Newton-Raphson for the load steps of
+     * a scene with cohesive interfaces. */
+    struct NonlinearSolver
+    {
+      unsigned int max_iterations;
+      double       tolerance;
+      bool         line_search;
+      double       minimum_step_fraction;
+      unsigned int easy_iterations;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
     /** All parameters of a run. */
     struct Parameters
     {
@@ -162,6 +208,8 @@ namespace amfrac
       Discretization     discretization;
       BoundaryConditions boundary_conditions;
       LinearSolver       linear_solver;
+      CohesiveInterfaces cohesive;
+      NonlinearSolver    nonlinear_solver;
       Time               time;
       Output             output;
 

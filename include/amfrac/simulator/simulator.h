@@ -2,6 +2,7 @@
 
 #include <amfrac/assembly/elastic_assembler.h>
 #include <amfrac/assembly/loads.h>
+#include <amfrac/cohesive/interface_assembler.h>
 #include <amfrac/dofs/tied_copy_dofs.h>
 #include <amfrac/geometry/laminate.h>
 #include <amfrac/material/ply_table.h>
@@ -80,6 +81,13 @@ namespace amfrac
       return *summary;
     }
 
+    /** The cohesive interfaces (nullptr if the scene has none). */
+    const CohesiveInterfaces<dim> *
+    cohesive_interfaces() const
+    {
+      return interfaces.get();
+    }
+
     /** Global norm of (u_h - exact) of the last step. */
     double
     compute_error(const Function<dim>        &exact,
@@ -100,6 +108,7 @@ namespace amfrac
     std::unique_ptr<PointProbe<dim>>         probe;
     std::unique_ptr<History>                 summary;
     std::unique_ptr<FieldOutput<dim>>        field_output;
+    std::unique_ptr<CohesiveInterfaces<dim>> interfaces;
 
     AffineConstraints<double> constraints;
     /** Per prescribed condition: the reduced dofs on its face (and Where)
@@ -111,18 +120,83 @@ namespace amfrac
     Vector                                            system_rhs;
     dealii::Vector<double>                            copy_values;
 
+    /** The Newton path (scenes with cohesive interfaces). */
+    struct NewtonState
+    {
+      /** The supports and hanging nodes with zero values: the constraints
+       * of a Newton increment. */
+      AffineConstraints<double>      increment_constraints;
+      TrilinosWrappers::SparseMatrix bulk_condensed;
+      TrilinosWrappers::SparseMatrix bulk_unconstrained;
+      Vector                         converged_solution;
+      Vector                         external_load;
+      /** K u + F_interfaces(u) - f: its entries on supports are reactions. */
+      Vector residual;
+      Vector condensed_residual;
+      Vector interface_force;
+      Vector increment;
+      /** Force scale of the convergence test (reactions and loads). */
+      double force_scale = 0;
+      /** For the trapezoidal external work. */
+      Vector previous_residual;
+      Vector previous_load;
+      double external_work = 0;
+    };
+    std::unique_ptr<NewtonState> newton;
+    bool                         solver_ready = false;
+
+    struct NewtonReport
+    {
+      bool                converged = false;
+      std::vector<double> residuals;
+      /** Why the linear solver failed, if it did. */
+      std::string failure;
+    };
+
     void
     build_loads_and_supports();
     void
     collect_supports();
     void
-    make_constraints(const double t);
+    make_constraints(const double               t,
+                     AffineConstraints<double> &target,
+                     const bool                 homogeneous) const;
+    void
+    run_linear();
+    void
+    run_newton();
+    void
+    setup_newton();
+    NewtonReport
+    solve_newton_step(const double t, LinearSolver &solver);
+    /** The condensed residual (and its norm) from NewtonState::residual;
+     * sets the force scale. */
+    double
+    condense_residual();
+    /** The residual of the linearized step from the converged state to the
+     * new prescribed values (in solution); the tangent of the converged
+     * state goes to system_matrix. */
+    double
+    predictor_residual();
+    double
+    update_residual(const Vector                   &trial,
+                    TrilinosWrappers::SparseMatrix *tangent);
+    std::vector<std::pair<std::string, double>>
+    energy_ledger();
     std::vector<std::vector<double>>
     rigid_body_modes() const;
     std::vector<std::vector<double>>
     owned_node_coordinates() const;
     void
-    postprocess(const unsigned int step, const double t);
+    postprocess(const unsigned int                                 step,
+                const double                                       t,
+                const Vector                                      &residual,
+                const std::vector<std::pair<std::string, double>> &columns);
+    /** Per prescribed condition, the force conjugate to the load
+     * parameter t: sum_i R_i dg_i/dt (the load P for a displacement
+     * +-P-conjugate opening, e.g. the DCB's arms opened by +-t/2). */
+    std::vector<double>
+    conjugate_forces(const double t, const Vector &residual) const;
     void
     prepare_output_directory() const;
   };

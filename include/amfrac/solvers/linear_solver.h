@@ -44,6 +44,20 @@ namespace amfrac
                const unsigned int                      n_pde_equations,
                const std::vector<std::vector<double>> &node_coordinates);
 
+    /** Redo the factorization (or the AMG hierarchy on the old
+     * aggregates) after the values of the last matrix changed, its pattern
+     * not. Returns the wall time it took. */
+    double
+    update_values();
+
+    /** Whether the matrices are symmetric (CG) or not (GMRES); only the
+     * iterative solver cares. */
+    void
+    set_symmetric(const bool value)
+    {
+      symmetric = value;
+    }
+
     struct Report
     {
       unsigned int iterations = 0;
@@ -66,5 +80,10 @@ namespace amfrac
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
     std::vector<double>                                null_space_storage;
     std::vector<std::vector<double>>                   coordinates;
+    bool                                               symmetric = true;
+
+    /** Numeric factorization; throws CollectiveError if singular. */
+    void
+    factorize();
   };
 } // namespace amfrac

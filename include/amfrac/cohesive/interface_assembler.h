@@ -1,0 +1,170 @@
+#pragma once
+
+#include <amfrac/cohesive/seed_law.h>
+#include <amfrac/dofs/tied_copy_dofs.h>
+#include <amfrac/parameters/parameters.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <vector>
+
+namespace amfrac
+{
+  /**
+   * The cohesive ply interfaces of a laminate (the seed's discrete-element
+   * bonding). Interface k lies between ply k and ply k + 1; its faces are
+   * released in the tied-copy DoF layer, so each ply is a body of its own,
+   * and every pair of faces across it is an interface element that bonds
+   * the two copies of its nodes by the seed's law.
+   *
+   * An interface element integrates the traction of the gap
+   * g = u(upper ply) - u(lower ply), expressed in the local frame (normal of
+   * the lower ply's face first, then the tangents), with Gauss or
+   * Gauss-Lobatto points; every point keeps the law's history of the last
+   * converged step and a trial state of the current iterate, and the work
+   * done on it, so that the energy ledger can split the interface work into
+   * what is stored, dissipated by fracture and dissipated by friction.
+   */
+  template <int dim>
+  class CohesiveInterfaces
+  {
+  public:
+    using CellIterator = typename TiedCopyDoFs<dim>::CellIterator;
+    using Vector       = TrilinosWrappers::MPI::Vector;
+    using Matrix       = TrilinosWrappers::SparseMatrix;
+
+    explicit CohesiveInterfaces(const parameters::CohesiveInterfaces &data);
+
+    /** The faces that the DoF layer must leave untied. */
+    typename TiedCopyDoFs<dim>::FaceFilter
+    released_faces() const;
+
+    /** Build the interface elements of the locally owned cells and put the
+     * pre-crack in their history. Throws InputError if a cohesive interface
+     * face is hanging or if the pre-crack region covers every point of its
+     * interfaces; returns the number of pre-cracked points (all ranks). */
+    unsigned long
+    setup(const TiedCopyDoFs<dim> &dofs, const std::string &constants);
+
+    /** Add the couplings across the interfaces to @p pattern. */
+    void
+    add_couplings(const AffineConstraints<double>   &constraints,
+                  TrilinosWrappers::SparsityPattern &pattern) const;
+
+    /**
+     * Evaluate the law at the displacement @p solution (locally relevant
+     * entries): add the interface forces to @p force (a vector with
+     * writable ghosts, compressed by the caller) and, if @p tangent is
+     * given, the consistent tangent condensed with @p constraints. The
+     * point states become the trial states.
+     */
+    void
+    assemble(const Vector                    &solution,
+             Vector                          &force,
+             const AffineConstraints<double> &constraints,
+             Matrix                          *tangent);
+
+    /** Add K_T(solution) @p direction to @p product (a vector with
+     * writable ghosts), with the tangent of the converged history; the
+     * point states are not touched. */
+    void
+    add_tangent_product(const Vector &solution,
+                        const Vector &direction,
+                        Vector       &product) const;
+
+    /** The pseudo-time step of the current load step (for the viscous
+     * regularization). */
+    void
+    set_time_step(const double dt)
+    {
+      time_step = dt;
+    }
+
+    /** Accept the trial states as the converged history. */
+    void
+    commit();
+
+    /** Energies (per unit width in 2D) and areas of one interface. */
+    struct Ledger
+    {
+      double work        = 0; ///< total work of the tractions on the gaps
+      double stored      = 0; ///< recoverable (elastic) part of the work
+      double dissipated  = 0; ///< by fracture (the bonded phase)
+      double friction    = 0; ///< by friction after debonding
+      double viscous     = 0; ///< by the viscous regularization
+      double debonded    = 0; ///< fully debonded area (length in 2D)
+      double damaged     = 0; ///< area with kappa > 0
+      double min_opening = 0; ///< most negative normal gap (contact)
+    };
+
+    /** One ledger per cohesive interface (summed over ranks), in the
+     * order of interfaces(). */
+    std::vector<Ledger>
+    ledger(const MPI_Comm comm) const;
+
+    const std::vector<unsigned int> &
+    interfaces() const
+    {
+      return data.interfaces;
+    }
+
+    /** Number of interface quadrature points on this rank. */
+    std::size_t
+    n_local_points() const;
+
+  private:
+    /** The state of one interface point. */
+    struct PointState
+    {
+      cohesive::SeedLawHistory<dim> history;
+      Tensor<1, dim>                gap;      ///< local frame
+      Tensor<1, dim>                traction; ///< local frame
+      /** Viscous traction of the regularization (local frame). */
+      Tensor<1, dim> viscous;
+      double         bond_work     = 0;
+      double         friction_work = 0;
+      double         viscous_work  = 0;
+    };
+
+    /** Two faces across an interface and what their integration needs. */
+    struct Element
+    {
+      unsigned int                         interface; ///< position in list
+      std::vector<types::global_dof_index> dofs; ///< lower face, upper face
+      std::vector<unsigned char>           component;
+      /** shape(q, k): the value of local dof k at point q, negative on the
+       * lower face, so that the gap is sum_k shape(q, k) u_k. */
+      FullMatrix<double>          shape;
+      std::vector<double>         JxW;
+      std::vector<Tensor<2, dim>> frame; ///< rows: normal, tangents
+      std::vector<Point<dim>>     points;
+      std::vector<PointState>     converged;
+      std::vector<PointState>     trial;
+    };
+
+    const parameters::CohesiveInterfaces data;
+    const cohesive::SeedLawProperties    law;
+    std::vector<Element>                 elements;
+    double                               time_step = 1;
+
+    bool
+    is_cohesive(const CellIterator &cell, const unsigned int face) const;
+
+    void
+    check_conforming(const DoFHandler<dim> &handler) const;
+
+    Element
+    make_element(const TiedCopyDoFs<dim> &dofs,
+                 const CellIterator      &cell,
+                 const unsigned int       face) const;
+
+    /** The law at one point, with the work increment from the converged
+     * state. */
+    PointState
+    evaluate(const PointState     &converged,
+             const Tensor<1, dim> &gap,
+             Tensor<2, dim>       &tangent) const;
+  };
+} // namespace amfrac

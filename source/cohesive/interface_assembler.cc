@@ -1,0 +1,479 @@
+#include <algorithm>
+#include <amfrac/cohesive/interface_assembler.h>
+#include <amfrac/parameters/expressions.h>
+#include <amfrac/parameters/input_error.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <limits>
+
+namespace amfrac
+{
+  namespace
+  {
+    cohesive::SeedLawProperties
+    law_properties(const parameters::CohesiveInterfaces &data)
+    {
+      cohesive::SeedLawProperties p;
+      p.normal_strength  = data.normal_strength;
+      p.shear_strength   = data.shear_strength;
+      p.G_Ic             = data.G_Ic;
+      p.G_IIc            = data.G_IIc;
+      p.normal_stiffness = data.normal_stiffness;
+      p.shear_stiffness  = data.shear_stiffness;
+      p.contact_penalty  = data.contact_penalty;
+      p.stick_penalty    = data.stick_penalty;
+      p.friction         = data.friction;
+      return p;
+    }
+
+    /** Rows: the unit normal @p n, then tangents (along x where possible,
+     * so that on a laminate interface they are the x and y axes). */
+    template <int dim>
+    Tensor<2, dim>
+    local_frame(const Tensor<1, dim> &n)
+    {
+      Tensor<2, dim> frame;
+      frame[0] = n;
+      if (dim == 2)
+        {
+          frame[1][0] = n[1];
+          frame[1][1] = -n[0];
+          return frame;
+        }
+      Tensor<1, dim> axis;
+      axis[std::abs(n[0]) < 0.9 ? 0 : 1] = 1;
+      Tensor<1, dim> t1                  = axis - (axis * n) * n;
+      t1 /= t1.norm();
+      frame[1] = t1;
+      frame[2] = cross_product_3d(n, t1);
+      return frame;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  CohesiveInterfaces<dim>::CohesiveInterfaces(
+    const parameters::CohesiveInterfaces &data)
+    : data(data)
+    , law(law_properties(data))
+  {}
+
+
+
+  template <int dim>
+  bool
+  CohesiveInterfaces<dim>::is_cohesive(const CellIterator &cell,
+                                       const unsigned int  face) const
+  {
+    if (cell->at_boundary(face))
+      return false;
+    const unsigned int a = cell->material_id();
+    const unsigned int b = cell->neighbor(face)->material_id();
+    if (a + 1 != b && b + 1 != a)
+      return false;
+    return std::binary_search(data.interfaces.begin(),
+                              data.interfaces.end(),
+                              std::min(a, b));
+  }
+
+
+
+  template <int dim>
+  typename TiedCopyDoFs<dim>::FaceFilter
+  CohesiveInterfaces<dim>::released_faces() const
+  {
+    return [this](const CellIterator &cell, const unsigned int face) {
+      return is_cohesive(cell, face);
+    };
+  }
+
+
+
+  template <int dim>
+  void
+  CohesiveInterfaces<dim>::check_conforming(
+    const DoFHandler<dim> &handler) const
+  {
+    // Every rank scans the whole (replicated) mesh, so all ranks agree.
+    for (const auto &cell : handler.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (is_cohesive(cell, f)
+            && (cell->neighbor(f)->has_children()
+                || cell->neighbor_is_coarser(f)))
+          throw InputError(
+            "Geometry/Refinement region",
+            "refines one side of cohesive interface "
+              + std::to_string(
+                std::min(cell->material_id(), cell->neighbor(f)->material_id()))
+              + " only: interface elements need matching faces, so refine "
+                "both plies alike");
+  }
+
+
+
+  template <int dim>
+  typename CohesiveInterfaces<dim>::Element
+  CohesiveInterfaces<dim>::make_element(const TiedCopyDoFs<dim> &dofs,
+                                        const CellIterator      &cell,
+                                        const unsigned int       face) const
+  {
+    const auto               &fe      = dofs.get_fe();
+    const unsigned int        n_nodes = fe.degree + 1;
+    const Quadrature<dim - 1> quadrature
+      = data.lobatto ? Quadrature<dim - 1>(QGaussLobatto<dim - 1>(n_nodes)) :
+                       Quadrature<dim - 1>(QGauss<dim - 1>(n_nodes));
+    const MappingQ1<dim> mapping;
+    const auto           flags = update_values | update_quadrature_points
+                       | update_JxW_values | update_normal_vectors;
+    FEFaceValues<dim>  lower(mapping, fe, quadrature, flags);
+    FEFaceValues<dim>  upper(mapping, fe, quadrature, flags);
+    const auto         neighbor      = cell->neighbor(face);
+    const unsigned int neighbor_face = cell->neighbor_of_neighbor(face);
+    lower.reinit(cell, face);
+    upper.reinit(neighbor, neighbor_face);
+
+    Element element;
+    element.interface = std::lower_bound(data.interfaces.begin(),
+                                         data.interfaces.end(),
+                                         std::min(cell->material_id(),
+                                                  neighbor->material_id()))
+                        - data.interfaces.begin();
+    std::vector<types::global_dof_index> lower_dofs(fe.n_dofs_per_cell()),
+      upper_dofs(fe.n_dofs_per_cell());
+    dofs.get_dof_indices(cell, lower_dofs);
+    dofs.get_dof_indices(neighbor, upper_dofs);
+    const auto        &lower_local = dofs.dofs_on_face(face);
+    const auto        &upper_local = dofs.dofs_on_face(neighbor_face);
+    const unsigned int n_q         = quadrature.size();
+    element.shape.reinit(n_q, lower_local.size() + upper_local.size());
+
+    // The face orientations of the two cells may differ: pair the points
+    // by position.
+    std::vector<unsigned int> match(n_q);
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        unsigned int best = 0;
+        for (unsigned int p = 1; p < n_q; ++p)
+          if (upper.quadrature_point(p).distance(lower.quadrature_point(q))
+              < upper.quadrature_point(best).distance(
+                lower.quadrature_point(q)))
+            best = p;
+        Assert(upper.quadrature_point(best).distance(lower.quadrature_point(q))
+                 < 1e-8 * cell->diameter(),
+               ExcInternalError());
+        match[q] = best;
+        element.JxW.push_back(lower.JxW(q));
+        element.points.push_back(lower.quadrature_point(q));
+        element.frame.push_back(local_frame<dim>(lower.normal_vector(q)));
+      }
+    for (unsigned int k = 0; k < lower_local.size(); ++k)
+      {
+        element.dofs.push_back(lower_dofs[lower_local[k]]);
+        element.component.push_back(
+          fe.system_to_component_index(lower_local[k]).first);
+        for (unsigned int q = 0; q < n_q; ++q)
+          element.shape(q, k) = -lower.shape_value(lower_local[k], q);
+      }
+    for (unsigned int k = 0; k < upper_local.size(); ++k)
+      {
+        const unsigned int column = lower_local.size() + k;
+        element.dofs.push_back(upper_dofs[upper_local[k]]);
+        element.component.push_back(
+          fe.system_to_component_index(upper_local[k]).first);
+        for (unsigned int q = 0; q < n_q; ++q)
+          element.shape(q, column)
+            = upper.shape_value(upper_local[k], match[q]);
+      }
+    element.converged.resize(n_q);
+    element.trial.resize(n_q);
+    return element;
+  }
+
+
+
+  template <int dim>
+  unsigned long
+  CohesiveInterfaces<dim>::setup(const TiedCopyDoFs<dim> &dofs,
+                                 const std::string       &constants)
+  {
+    check_conforming(dofs.copy_handler());
+    elements.clear();
+    // Each element once, from its lower (smaller ply index) cell.
+    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (is_cohesive(cell, f)
+              && cell->neighbor(f)->material_id() > cell->material_id())
+            elements.push_back(make_element(dofs, cell, f));
+
+    const MPI_Comm comm
+      = dofs.copy_handler().get_triangulation().get_communicator();
+    if (data.precrack_interfaces.empty())
+      return 0;
+    const auto region
+      = make_expression_function<dim>({data.precrack_region},
+                                      1,
+                                      constants,
+                                      "Cohesive interfaces/Pre-crack region");
+    unsigned long cracked = 0, candidates = 0;
+    for (Element &element : elements)
+      {
+        if (!std::binary_search(data.precrack_interfaces.begin(),
+                                data.precrack_interfaces.end(),
+                                data.interfaces[element.interface]))
+          continue;
+        for (unsigned int q = 0; q < element.points.size(); ++q)
+          {
+            ++candidates;
+            if (region->value(element.points[q]) == 0.)
+              continue;
+            ++cracked;
+            // Fully debonded from the start, with nothing dissipated: the
+            // pre-crack is not part of the energy ledger.
+            auto &history    = element.converged[q].history;
+            history.kappa    = std::numeric_limits<double>::max();
+            history.debonded = true;
+            element.trial[q] = element.converged[q];
+          }
+      }
+    cracked    = Utilities::MPI::sum(cracked, comm);
+    candidates = Utilities::MPI::sum(candidates, comm);
+    require(cracked < candidates,
+            "Cohesive interfaces/Pre-crack region",
+            "covers every point of the pre-crack interfaces: the plies "
+            "would not be bonded anywhere");
+    return cracked;
+  }
+
+
+
+  template <int dim>
+  std::size_t
+  CohesiveInterfaces<dim>::n_local_points() const
+  {
+    std::size_t n = 0;
+    for (const Element &element : elements)
+      n += element.points.size();
+    return n;
+  }
+
+
+
+  template <int dim>
+  void
+  CohesiveInterfaces<dim>::add_couplings(
+    const AffineConstraints<double>   &constraints,
+    TrilinosWrappers::SparsityPattern &pattern) const
+  {
+    for (const Element &element : elements)
+      constraints.add_entries_local_to_global(element.dofs, pattern, false);
+  }
+
+
+
+  template <int dim>
+  typename CohesiveInterfaces<dim>::PointState
+  CohesiveInterfaces<dim>::evaluate(const PointState     &converged,
+                                    const Tensor<1, dim> &gap,
+                                    Tensor<2, dim>       &tangent) const
+  {
+    const auto response = cohesive::seed_law<dim>(gap, converged.history, law);
+    PointState state;
+    state.history  = response.history;
+    state.gap      = gap;
+    state.traction = response.traction;
+    tangent        = response.tangent;
+    // Viscous regularization (Gao & Bower 2004) of the bonded phase: a
+    // traction eta (g - g_old) / dt that gives a softening point the
+    // positive stiffness eta / dt, so that a step cut back far enough gets
+    // through a local snap-back. Its work is reported on its own.
+    state.viscous_work = converged.viscous_work;
+    state.viscous      = 0;
+    if (data.viscosity > 0 && !converged.history.debonded)
+      {
+        const double         rate = data.viscosity / time_step;
+        const Tensor<1, dim> step = gap - converged.gap;
+        state.viscous             = rate * step;
+        state.viscous_work += rate * step * step;
+        for (unsigned int d = 0; d < dim; ++d)
+          tangent[d][d] += rate;
+      }
+    // Trapezoidal work increment; the work done while bonded is the
+    // fracture budget, the work after debonding goes to friction (and to
+    // the contact penalty, which stores it).
+    const double increment
+      = 0.5 * (converged.traction + state.traction) * (gap - converged.gap);
+    state.bond_work     = converged.bond_work;
+    state.friction_work = converged.friction_work;
+    if (converged.history.debonded)
+      state.friction_work += increment;
+    else
+      state.bond_work += increment;
+    return state;
+  }
+
+
+
+  template <int dim>
+  void
+  CohesiveInterfaces<dim>::assemble(
+    const Vector                    &solution,
+    Vector                          &force,
+    const AffineConstraints<double> &constraints,
+    Matrix                          *tangent)
+  {
+    FullMatrix<double>     K;
+    dealii::Vector<double> r, u;
+    Tensor<2, dim>         D;
+    for (Element &element : elements)
+      {
+        const unsigned int n = element.dofs.size();
+        u.reinit(n);
+        r.reinit(n);
+        if (tangent)
+          K.reinit(n, n);
+        for (unsigned int k = 0; k < n; ++k)
+          u(k) = solution(element.dofs[k]);
+        for (unsigned int q = 0; q < element.JxW.size(); ++q)
+          {
+            Tensor<1, dim> global_gap;
+            for (unsigned int k = 0; k < n; ++k)
+              global_gap[element.component[k]] += element.shape(q, k) * u(k);
+            const Tensor<2, dim> &F = element.frame[q];
+            element.trial[q]
+              = evaluate(element.converged[q], F * global_gap, D);
+            const Tensor<1, dim> traction
+              = transpose(F)
+                * (element.trial[q].traction + element.trial[q].viscous)
+                * element.JxW[q];
+            for (unsigned int k = 0; k < n; ++k)
+              r(k) += element.shape(q, k) * traction[element.component[k]];
+            if (!tangent)
+              continue;
+            const Tensor<2, dim> D_global
+              = transpose(F) * D * F * element.JxW[q];
+            for (unsigned int k = 0; k < n; ++k)
+              {
+                const double sk = element.shape(q, k);
+                if (sk == 0)
+                  continue;
+                for (unsigned int l = 0; l < n; ++l)
+                  K(k, l)
+                    += sk * element.shape(q, l)
+                       * D_global[element.component[k]][element.component[l]];
+              }
+          }
+        force.add(element.dofs, r);
+        if (tangent)
+          constraints.distribute_local_to_global(K, element.dofs, *tangent);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  CohesiveInterfaces<dim>::add_tangent_product(const Vector &solution,
+                                               const Vector &direction,
+                                               Vector       &product) const
+  {
+    dealii::Vector<double> r;
+    Tensor<2, dim>         D;
+    for (const Element &element : elements)
+      {
+        const unsigned int n = element.dofs.size();
+        r.reinit(n);
+        for (unsigned int q = 0; q < element.JxW.size(); ++q)
+          {
+            Tensor<1, dim> gap, dgap;
+            for (unsigned int k = 0; k < n; ++k)
+              {
+                gap[element.component[k]]
+                  += element.shape(q, k) * solution(element.dofs[k]);
+                dgap[element.component[k]]
+                  += element.shape(q, k) * direction(element.dofs[k]);
+              }
+            const Tensor<2, dim> &F = element.frame[q];
+            evaluate(element.converged[q], F * gap, D);
+            const Tensor<1, dim> dtraction
+              = transpose(F) * (D * (F * dgap)) * element.JxW[q];
+            for (unsigned int k = 0; k < n; ++k)
+              r(k) += element.shape(q, k) * dtraction[element.component[k]];
+          }
+        product.add(element.dofs, r);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  CohesiveInterfaces<dim>::commit()
+  {
+    for (Element &element : elements)
+      element.converged = element.trial;
+  }
+
+
+
+  template <int dim>
+  std::vector<typename CohesiveInterfaces<dim>::Ledger>
+  CohesiveInterfaces<dim>::ledger(const MPI_Comm comm) const
+  {
+    std::vector<Ledger> result(data.interfaces.size());
+    for (const Element &element : elements)
+      {
+        Ledger &l = result[element.interface];
+        for (unsigned int q = 0; q < element.JxW.size(); ++q)
+          {
+            const PointState &s   = element.converged[q];
+            const double      JxW = element.JxW[q];
+            // The secant law unloads to the origin: what is stored is half
+            // of traction times gap while bonded; after debonding the
+            // contact penalty and the elastic stick stretch store energy.
+            double stored = 0.5 * s.traction * s.gap;
+            if (s.history.debonded)
+              {
+                double tangential = 0;
+                for (unsigned int i = 1; i < dim; ++i)
+                  tangential += s.traction[i] * s.traction[i];
+                stored = 0.5 * s.traction[0] * s.gap[0]
+                         + 0.5 * tangential / law.stick_penalty;
+              }
+            l.work += (s.bond_work + s.friction_work + s.viscous_work) * JxW;
+            l.viscous += s.viscous_work * JxW;
+            l.stored += stored * JxW;
+            if (s.history.debonded)
+              {
+                l.dissipated += s.bond_work * JxW;
+                l.friction += (s.friction_work - stored) * JxW;
+                l.debonded += JxW;
+              }
+            else
+              l.dissipated += (s.bond_work - stored) * JxW;
+            if (s.history.kappa > 0)
+              l.damaged += JxW;
+            l.min_opening = std::min(l.min_opening, s.gap[0]);
+          }
+      }
+    for (Ledger &l : result)
+      {
+        double *sums[] = {&l.work,
+                          &l.stored,
+                          &l.dissipated,
+                          &l.friction,
+                          &l.debonded,
+                          &l.damaged};
+        for (double *value : sums)
+          *value = Utilities::MPI::sum(*value, comm);
+        l.min_opening = Utilities::MPI::min(l.min_opening, comm);
+      }
+    return result;
+  }
+
+  template class CohesiveInterfaces<2>;
+  template class CohesiveInterfaces<3>;
+} // namespace amfrac

@@ -1,0 +1,375 @@
+// The quasi-static Newton-Raphson path of Simulator: scenes with cohesive
+// interfaces. The bulk is linear, so its matrix is assembled once (condensed
+// for the Newton increments, and unconstrained for residuals and
+// reactions); each iteration adds only the interface tangent.
+#include <amfrac/parameters/input_error.h>
+#include <amfrac/simulator/simulator.h>
+#include <cmath>
+#include <deal.II/base/mpi.h>
+#include <iomanip>
+#include <sstream>
+
+namespace amfrac
+{
+  template <int dim>
+  void
+  Simulator<dim>::setup_newton()
+  {
+    TimerOutput::Scope scope(timer, "setup Newton");
+    newton = std::make_unique<NewtonState>();
+    make_constraints(0., newton->increment_constraints, true);
+
+    const IndexSet &owned    = dof_layer.locally_owned_dofs();
+    const IndexSet &relevant = dof_layer.locally_relevant_dofs();
+    TrilinosWrappers::SparsityPattern pattern(owned, owned, relevant, comm);
+    assembler.add_couplings(newton->increment_constraints, pattern);
+    interfaces->add_couplings(newton->increment_constraints, pattern);
+    pattern.compress();
+    newton->bulk_condensed.reinit(pattern);
+    system_matrix.reinit(pattern);
+    assembler.assemble_matrix(newton->increment_constraints,
+                              newton->bulk_condensed);
+
+    AffineConstraints<double> none;
+    none.close();
+    assembler.reinit_matrix(none, newton->bulk_unconstrained);
+    assembler.assemble_matrix(none, newton->bulk_unconstrained);
+
+    for (Vector *v : {&solution,
+                      &newton->converged_solution,
+                      &newton->external_load,
+                      &newton->residual,
+                      &newton->condensed_residual,
+                      &newton->increment,
+                      &newton->previous_residual,
+                      &newton->previous_load})
+      v->reinit(owned, comm);
+    newton->interface_force.reinit(owned, relevant, comm, true);
+    relevant_solution.reinit(owned, relevant, comm);
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::update_residual(const Vector                   &trial,
+                                  TrilinosWrappers::SparseMatrix *tangent)
+  {
+    NewtonState &n = *newton;
+    {
+      TimerOutput::Scope scope(timer, "interfaces");
+      relevant_solution = trial;
+      n.interface_force = 0;
+      if (tangent)
+        tangent->copy_from(n.bulk_condensed);
+      interfaces->assemble(relevant_solution,
+                           n.interface_force,
+                           n.increment_constraints,
+                           tangent);
+      n.interface_force.compress(VectorOperation::add);
+      if (tangent)
+        tangent->compress(VectorOperation::add);
+    }
+    TimerOutput::Scope scope(timer, "residual");
+    n.bulk_unconstrained.vmult(n.residual, trial);
+    n.residual -= n.external_load;
+    n.residual += n.interface_force;
+    return condense_residual();
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::condense_residual()
+  {
+    NewtonState &n = *newton;
+    // The residual of the free unknowns is C^T R: a hanging unknown hands
+    // its residual to the unknowns it interpolates; supported ones carry
+    // reactions, which the scale of the test measures.
+    const AffineConstraints<double> &C     = n.increment_constraints;
+    const IndexSet                  &owned = dof_layer.locally_owned_dofs();
+    n.interface_force                      = 0; // reused as the transfer
+    for (const auto &line : C.get_lines())
+      if (owned.is_element(line.index))
+        for (const auto &[j, w] : line.entries)
+          n.interface_force(j) += w * n.residual(line.index);
+    n.interface_force.compress(VectorOperation::add);
+    n.condensed_residual = n.residual;
+    n.condensed_residual += n.interface_force;
+    double reactions = 0;
+    for (const auto i : owned)
+      if (C.is_constrained(i))
+        {
+          reactions += n.residual(i) * n.residual(i);
+          n.condensed_residual(i) = 0;
+        }
+    reactions = Utilities::MPI::sum(reactions, comm);
+    n.force_scale
+      = std::sqrt(reactions + std::pow(n.external_load.l2_norm(), 2));
+    return n.condensed_residual.l2_norm();
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::predictor_residual()
+  {
+    NewtonState &n = *newton;
+    Vector       jump(solution);
+    jump -= n.converged_solution;
+    update_residual(n.converged_solution, &system_matrix);
+    Vector product(jump);
+    n.bulk_unconstrained.vmult(product, jump);
+    n.residual += product;
+    Vector relevant_jump(dof_layer.locally_owned_dofs(),
+                         dof_layer.locally_relevant_dofs(),
+                         comm);
+    relevant_jump     = jump;
+    n.interface_force = 0;
+    interfaces->add_tangent_product(relevant_solution,
+                                    relevant_jump,
+                                    n.interface_force);
+    n.interface_force.compress(VectorOperation::add);
+    n.residual += n.interface_force;
+    return condense_residual();
+  }
+
+
+
+  template <int dim>
+  typename Simulator<dim>::NewtonReport
+  Simulator<dim>::solve_newton_step(const double t, LinearSolver &solver)
+  {
+    NewtonState                       &n = *newton;
+    const parameters::NonlinearSolver &p = parameters.nonlinear_solver;
+    {
+      TimerOutput::Scope scope(timer, "constraints");
+      make_constraints(t, constraints, false);
+      assembler.assemble_load(loads, t, n.external_load);
+      solution = n.converged_solution;
+      constraints.distribute(solution);
+    }
+    NewtonReport report;
+    // Predictor: the converged state's tangent applied to the new
+    // prescribed values, R(u_old) + K_T(u_old) (u_jump - u_old). Starting
+    // from u_jump itself would put the whole step's displacement jump into
+    // the elements next to the supports, damage their interfaces on the way
+    // and cost several iterations even in an elastic step.
+    double norm = predictor_residual();
+    report.residuals.push_back(norm);
+    const auto converged
+      = [&]() { return norm <= p.tolerance * n.force_scale || norm == 0; };
+    for (unsigned int it = 0; it < p.max_iterations; ++it)
+      {
+        if (it > 0)
+          {
+            if (converged())
+              break;
+            update_residual(solution, &system_matrix);
+          }
+        n.condensed_residual *= -1;
+        try
+          {
+            TimerOutput::Scope scope(timer, "linear solve");
+            // The pattern never changes: analyse it once, refactorize
+            // the values afterwards.
+            if (!solver_ready)
+              solver.initialize(system_matrix,
+                                rigid_body_modes(),
+                                dim,
+                                owned_node_coordinates());
+            else
+              solver.update_values();
+            solver_ready = true;
+            solver.solve(n.increment, n.condensed_residual);
+          }
+        catch (const CollectiveError &e)
+          {
+            report.failure = e.what(); // e.g. a singular tangent: cut back
+            return report;
+          }
+        n.increment_constraints.distribute(n.increment);
+
+        // Backtracking line search on the residual norm; the best point
+        // seen is kept if none satisfies the decrease condition.
+        const Vector start = solution;
+        double       alpha = 1, best_alpha = 1, best_norm = 0;
+        for (unsigned int trial = 0;; ++trial)
+          {
+            solution = start;
+            solution.add(alpha, n.increment);
+            const double trial_norm = update_residual(solution, nullptr);
+            if (trial == 0 || trial_norm < best_norm)
+              best_norm = trial_norm, best_alpha = alpha;
+            if (!p.line_search || trial_norm < (1 - 1e-4 * alpha) * norm
+                || trial == 5)
+              break;
+            alpha *= 0.5;
+          }
+        if (best_alpha != alpha)
+          {
+            solution = start;
+            solution.add(best_alpha, n.increment);
+            update_residual(solution, nullptr);
+          }
+        norm = best_norm;
+        report.residuals.push_back(norm);
+        if (!std::isfinite(norm))
+          return report;
+      }
+    report.converged = converged();
+    return report;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::pair<std::string, double>>
+  Simulator<dim>::energy_ledger()
+  {
+    NewtonState &n = *newton;
+    // External work by the trapezoidal rule: reactions on the supports and
+    // the applied loads, times the displacement increment.
+    Vector delta = solution;
+    delta -= n.converged_solution;
+    double work = 0;
+    for (unsigned int k = 0; k < prescribed.size(); ++k)
+      for (const auto i : supports[k])
+        if (dof_layer.locally_owned_dofs().is_element(i))
+          work += 0.5 * (n.previous_residual(i) + n.residual(i)) * delta(i);
+    work            = Utilities::MPI::sum(work, comm);
+    Vector load_sum = n.previous_load;
+    load_sum += n.external_load;
+    work += 0.5 * (load_sum * delta);
+    n.external_work += work;
+
+    Vector Ku = solution;
+    n.bulk_unconstrained.vmult(Ku, solution);
+    const double strain_energy = 0.5 * (Ku * solution);
+
+    std::vector<std::pair<std::string, double>> columns
+      = {{"external_work", n.external_work}, {"strain_energy", strain_energy}};
+    const auto ledger            = interfaces->ledger(comm);
+    double     interface_work    = 0;
+    double     interface_storage = 0;
+    for (unsigned int k = 0; k < ledger.size(); ++k)
+      {
+        const std::string name = std::to_string(interfaces->interfaces()[k]);
+        interface_work += ledger[k].work;
+        interface_storage += ledger[k].stored;
+        columns.emplace_back("dissipated_i" + name, ledger[k].dissipated);
+        columns.emplace_back("friction_i" + name, ledger[k].friction);
+        columns.emplace_back("viscous_i" + name, ledger[k].viscous);
+        columns.emplace_back("debonded_i" + name, ledger[k].debonded);
+        columns.emplace_back("damaged_i" + name, ledger[k].damaged);
+        columns.emplace_back("min_opening_i" + name, ledger[k].min_opening);
+      }
+    columns.emplace_back("interface_stored", interface_storage);
+    columns.emplace_back("balance_error",
+                         n.external_work - strain_energy - interface_work);
+    n.previous_residual = n.residual;
+    n.previous_load     = n.external_load;
+    return columns;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::run_newton()
+  {
+    if (prescribed.empty())
+      throw InputError("Boundary conditions",
+                       "no face has Type = displacement, so the plies "
+                       "can move as rigid bodies: prescribe displacements "
+                       "on at least one face");
+    pcout << "amfrac: " << dim << "D, " << laminate.n_plies() << " plies, "
+          << interfaces->interfaces().size() << " cohesive interface(s), "
+          << triangulation.n_active_cells() << " cells, " << dof_layer.n_dofs()
+          << " unknowns, Q" << dof_layer.get_fe().degree << ", "
+          << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)"
+          << std::endl;
+    prepare_output_directory();
+    collect_supports();
+    setup_newton();
+    LinearSolver solver(parameters.linear_solver);
+    // Softening and friction make the tangent unsymmetric.
+    solver.set_symmetric(false);
+
+    const parameters::NonlinearSolver &p       = parameters.nonlinear_solver;
+    const double                       end     = parameters.time.end_time;
+    const double                       nominal = end / parameters.time.n_steps;
+    double                             t = 0, dt = nominal;
+    unsigned int                       step = 0, total_iterations = 0;
+    std::vector<unsigned int>          iterations;
+    while (t < end * (1 - 1e-12))
+      {
+        const double trial_t = std::min(t + dt, end);
+        interfaces->set_time_step(trial_t - t);
+        const auto report = solve_newton_step(trial_t, solver);
+        if (!report.converged)
+          {
+            dt *= 0.5;
+            std::ostringstream line;
+            line << "  t=" << trial_t << ": Newton did not converge, |r|:";
+            for (const double r : report.residuals)
+              line << ' ' << std::setprecision(2) << r;
+            pcout << line.str() << " (force scale " << newton->force_scale
+                  << "); step cut to " << dt << std::endl;
+            if (dt < p.minimum_step_fraction * nominal)
+              {
+                if (field_output)
+                  {
+                    relevant_solution = newton->converged_solution;
+                    dof_layer.expand(relevant_solution, copy_values);
+                    field_output->write(step, t, copy_values);
+                  }
+                std::ostringstream message;
+                message << "Newton did not converge at t=" << trial_t
+                        << " with the smallest step allowed by parameter "
+                           "<Nonlinear solver/Minimum step fraction>; the "
+                           "last converged state (t="
+                        << t << ") is written";
+                if (!report.failure.empty())
+                  message << "; the linear solver said: " << report.failure;
+                throw CollectiveError(message.str());
+              }
+            continue;
+          }
+        interfaces->commit();
+        const unsigned int its = report.residuals.size() - 1;
+        iterations.push_back(its);
+        total_iterations += its;
+        ++step;
+        {
+          std::ostringstream line;
+          line << "  step " << step << " t=" << trial_t << ": " << its
+               << " Newton iteration(s), |r|:";
+          for (const double r : report.residuals)
+            line << ' ' << std::setprecision(2) << r;
+          pcout << line.str() << std::endl;
+        }
+        const auto columns         = energy_ledger();
+        newton->converged_solution = solution;
+        t                          = trial_t;
+        auto row                   = columns;
+        row.emplace_back("newton_iterations", its);
+        postprocess(step, t, newton->residual, row);
+        if (its <= p.easy_iterations && dt < nominal)
+          dt = std::min(2 * dt, nominal);
+      }
+    std::sort(iterations.begin(), iterations.end());
+    pcout << "  " << step << " steps, " << total_iterations
+          << " Newton iterations, median "
+          << (iterations.empty() ? 0 : iterations[iterations.size() / 2])
+          << " per step" << std::endl;
+    timer.print_wall_time_statistics(comm);
+  }
+
+  template void
+  Simulator<2>::run_newton();
+  template void
+  Simulator<3>::run_newton();
+} // namespace amfrac
