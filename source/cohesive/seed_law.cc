@@ -79,7 +79,11 @@ namespace amfrac
           for (unsigned int i = 0; i < dim - 1; ++i)
             dkappa[i + 1] = gT[i] / (g0T * g0T * root);
         }
-      const bool loading = kappa_now > history.kappa && kappa_now > 0;
+      // At kappa = kappa_max (e.g. the converged state itself) the tangent
+      // is the one of continued loading: the predictor of the next step and
+      // the dissipation constraint need the softening slope there, not the
+      // secant of unloading.
+      const bool loading = kappa_now >= history.kappa && kappa_now > 0;
 
       SeedLawResponse<dim> r;
       r.history              = history;

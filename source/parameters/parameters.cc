@@ -864,6 +864,23 @@ namespace amfrac
                         "After a cut-back, the step doubles again (up to "
                         "the nominal step) when a step converges in at "
                         "most this many iterations.");
+      prm.declare_entry(
+        "Control",
+        "displacement",
+        Patterns::Selection("displacement|dissipation"),
+        "displacement: steps of the load parameter t. dissipation: as "
+        "displacement while the structure is (nearly) elastic, then steps of "
+        "the dissipated energy (Gutierrez 2004, Verhoosel et al. 2009), which "
+        "follows snap-backs of a softening interface that no displacement "
+        "step can pass; t may then decrease. Needs prescribed displacements "
+        "proportional to t and no applied loads.");
+      prm.declare_entry("Dissipation increment",
+                        "0.01",
+                        Patterns::Double(0),
+                        "Energy dissipated per step under dissipation "
+                        "control, in N mm (N mm per mm of width in 2D); "
+                        "also the threshold at which a displacement step "
+                        "switches to it.");
       prm.leave_subsection();
     }
 
@@ -878,10 +895,15 @@ namespace amfrac
       line_search           = prm.get_bool("Line search");
       minimum_step_fraction = prm.get_double("Minimum step fraction");
       easy_iterations       = prm.get_integer("Easy step iterations");
+      dissipation_control   = prm.get("Control") == "dissipation";
+      dissipation_increment = prm.get_double("Dissipation increment");
       prm.leave_subsection();
       require(tolerance > 0,
               "Nonlinear solver/Residual tolerance",
               "must be positive");
+      require(!dissipation_control || dissipation_increment > 0,
+              "Nonlinear solver/Dissipation increment",
+              "must be positive under dissipation control");
       require(minimum_step_fraction > 0,
               "Nonlinear solver/Minimum step fraction",
               "must be positive");

@@ -11,6 +11,21 @@
 
 namespace amfrac
 {
+  namespace
+  {
+    /** Newton cycling between branches of the law (a local snap-back)
+     * rather than converging: give up early and cut the step or switch to
+     * dissipation control. */
+    bool
+    stagnates(const std::vector<double> &residuals)
+    {
+      const std::size_t n = residuals.size();
+      return n >= 6 && residuals[n - 1] > 0.5 * residuals[n - 3];
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   Simulator<dim>::setup_newton()
@@ -42,7 +57,11 @@ namespace amfrac
                       &newton->condensed_residual,
                       &newton->increment,
                       &newton->previous_residual,
-                      &newton->previous_load})
+                      &newton->previous_load,
+                      &newton->load_pattern,
+                      &newton->pattern_response,
+                      &newton->pattern_condensed,
+                      &newton->pattern_increment})
       v->reinit(owned, comm);
     newton->interface_force.reinit(owned, relevant, comm, true);
     relevant_solution.reinit(owned, relevant, comm);
@@ -83,31 +102,62 @@ namespace amfrac
   double
   Simulator<dim>::condense_residual()
   {
+    NewtonState &n         = *newton;
+    const double reactions = condense(n.residual, n.condensed_residual);
+    n.force_scale
+      = std::sqrt(reactions + std::pow(n.external_load.l2_norm(), 2));
+    return n.condensed_residual.l2_norm();
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::condense(const Vector &full, Vector &condensed)
+  {
     NewtonState &n = *newton;
     // The residual of the free unknowns is C^T R: a hanging unknown hands
     // its residual to the unknowns it interpolates; supported ones carry
-    // reactions, which the scale of the test measures.
+    // reactions, which the scale of the convergence test measures.
     const AffineConstraints<double> &C     = n.increment_constraints;
     const IndexSet                  &owned = dof_layer.locally_owned_dofs();
     n.interface_force                      = 0; // reused as the transfer
     for (const auto &line : C.get_lines())
       if (owned.is_element(line.index))
         for (const auto &[j, w] : line.entries)
-          n.interface_force(j) += w * n.residual(line.index);
+          n.interface_force(j) += w * full(line.index);
     n.interface_force.compress(VectorOperation::add);
-    n.condensed_residual = n.residual;
-    n.condensed_residual += n.interface_force;
-    double reactions = 0;
+    condensed = full;
+    condensed += n.interface_force;
+    double constrained = 0;
     for (const auto i : owned)
       if (C.is_constrained(i))
         {
-          reactions += n.residual(i) * n.residual(i);
-          n.condensed_residual(i) = 0;
+          constrained += full(i) * full(i);
+          condensed(i) = 0;
         }
-    reactions = Utilities::MPI::sum(reactions, comm);
-    n.force_scale
-      = std::sqrt(reactions + std::pow(n.external_load.l2_norm(), 2));
-    return n.condensed_residual.l2_norm();
+    return Utilities::MPI::sum(constrained, comm);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::tangent_product(const Vector &direction, Vector &product)
+  {
+    // K_T d = K_bulk d + K_interfaces(relevant_solution) d, unconstrained.
+    NewtonState &n = *newton;
+    n.bulk_unconstrained.vmult(product, direction);
+    Vector relevant_direction(dof_layer.locally_owned_dofs(),
+                              dof_layer.locally_relevant_dofs(),
+                              comm);
+    relevant_direction = direction;
+    n.interface_force  = 0;
+    interfaces->add_tangent_product(relevant_solution,
+                                    relevant_direction,
+                                    n.interface_force);
+    n.interface_force.compress(VectorOperation::add);
+    product += n.interface_force;
   }
 
 
@@ -121,19 +171,154 @@ namespace amfrac
     jump -= n.converged_solution;
     update_residual(n.converged_solution, &system_matrix);
     Vector product(jump);
-    n.bulk_unconstrained.vmult(product, jump);
+    tangent_product(jump, product);
     n.residual += product;
-    Vector relevant_jump(dof_layer.locally_owned_dofs(),
-                         dof_layer.locally_relevant_dofs(),
-                         comm);
-    relevant_jump     = jump;
-    n.interface_force = 0;
-    interfaces->add_tangent_product(relevant_solution,
-                                    relevant_jump,
-                                    n.interface_force);
-    n.interface_force.compress(VectorOperation::add);
-    n.residual += n.interface_force;
     return condense_residual();
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::load_force(const Vector &residual) const
+  {
+    double force = 0;
+    for (const auto &support : supports)
+      for (const auto i : support)
+        if (dof_layer.locally_owned_dofs().is_element(i))
+          force += newton->load_pattern(i) * residual(i);
+    return Utilities::MPI::sum(force, comm);
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::pattern_derivative(const Vector &state)
+  {
+    NewtonState &n    = *newton;
+    relevant_solution = state;
+    tangent_product(n.load_pattern, n.pattern_response);
+    condense(n.pattern_response, n.pattern_condensed);
+    return load_force(n.pattern_response);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::linear_solve(LinearSolver &solver, Vector &x, const Vector &b)
+  {
+    TimerOutput::Scope scope(timer, "linear solve");
+    // The pattern never changes: analyse it once, refactorize the values
+    // afterwards.
+    if (!solver_ready)
+      solver.initialize(system_matrix,
+                        rigid_body_modes(),
+                        dim,
+                        owned_node_coordinates());
+    else
+      solver.update_values();
+    solver_ready = true;
+    solver.solve(x, b);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::setup_dissipation_control()
+  {
+    // Dissipation control scales the prescribed displacements with t:
+    // check that they are proportional to t (and that no load is applied).
+    if (!loads.empty())
+      throw InputError("Nonlinear solver/Control",
+                       "dissipation control needs all loads to be "
+                       "prescribed displacements (this scene has tractions, "
+                       "pressures or a body force)");
+    const double              end = parameters.time.end_time;
+    AffineConstraints<double> at_end, halfway;
+    make_constraints(1., at_end, false);
+    make_constraints(0.5 * end, halfway, false);
+    bool proportional = true;
+    for (const auto &line : at_end.get_lines())
+      if (at_end.is_inhomogeneously_constrained(line.index))
+        proportional = proportional
+                       && std::abs(halfway.get_inhomogeneity(line.index)
+                                   - 0.5 * end * line.inhomogeneity)
+                            <= 1e-10 * end * std::abs(line.inhomogeneity);
+    if (Utilities::MPI::min(proportional ? 1 : 0, comm) == 0)
+      throw InputError("Nonlinear solver/Control",
+                       "dissipation control needs prescribed displacements "
+                       "proportional to t (g(t) = t g(1))");
+    newton->load_pattern = 0;
+    at_end.distribute(newton->load_pattern);
+  }
+
+
+
+  template <int dim>
+  typename Simulator<dim>::NewtonReport
+  Simulator<dim>::solve_dissipation_step(const double  t0,
+                                         const double  increment,
+                                         double       &t,
+                                         LinearSolver &solver)
+  {
+    // Unknowns (u, t) with the constraint that the step dissipates
+    // `increment`: for a secant (unload-to-origin) law the dissipated
+    // energy of a step is (P0 t - P t0) / 2, P the force conjugate to t.
+    // Each iteration solves K du_I = -r and K du_II = -dR/dt with one
+    // factorization and picks dt from the linearized constraint.
+    NewtonState                       &n  = *newton;
+    const parameters::NonlinearSolver &p  = parameters.nonlinear_solver;
+    const double                       P0 = n.converged_force;
+    t                                     = t0;
+    solution                              = n.converged_solution;
+    NewtonReport report;
+    for (unsigned int it = 0;; ++it)
+      {
+        const double norm = update_residual(solution, &system_matrix);
+        const double constraint
+          = 0.5 * (P0 * t - load_force(n.residual) * t0) - increment;
+        report.residuals.push_back(norm);
+        if (it > 0 && norm <= p.tolerance * n.force_scale
+            && std::abs(constraint) <= 1e-6 * increment)
+          {
+            report.converged = true;
+            return report;
+          }
+        if (it == p.max_iterations || !std::isfinite(norm)
+            || stagnates(report.residuals))
+          return report;
+        const double stiffness = pattern_derivative(solution);
+        n.condensed_residual *= -1;
+        n.pattern_condensed *= -1;
+        try
+          {
+            linear_solve(solver, n.increment, n.condensed_residual);
+            solver.solve(n.pattern_increment, n.pattern_condensed);
+          }
+        catch (const CollectiveError &e)
+          {
+            report.failure = e.what();
+            return report;
+          }
+        // pattern_condensed now holds -dR/dt; dP/du = (dR/dt)^T for the
+        // symmetric couplings of the supported nodes.
+        const double slope
+          = stiffness + n.pattern_condensed * n.pattern_increment * -1;
+        const double denominator = 0.5 * (P0 - t0 * slope);
+        if (!(std::abs(denominator) > 0))
+          return report;
+        const double dt
+          = -(constraint + 0.5 * t0 * (n.pattern_condensed * n.increment))
+            / denominator;
+        n.increment.add(dt, n.pattern_increment);
+        n.increment_constraints.distribute(n.increment);
+        n.increment.add(dt, n.load_pattern);
+        solution += n.increment;
+        t += dt;
+      }
   }
 
 
@@ -172,18 +357,7 @@ namespace amfrac
         n.condensed_residual *= -1;
         try
           {
-            TimerOutput::Scope scope(timer, "linear solve");
-            // The pattern never changes: analyse it once, refactorize
-            // the values afterwards.
-            if (!solver_ready)
-              solver.initialize(system_matrix,
-                                rigid_body_modes(),
-                                dim,
-                                owned_node_coordinates());
-            else
-              solver.update_values();
-            solver_ready = true;
-            solver.solve(n.increment, n.condensed_residual);
+            linear_solve(solver, n.increment, n.condensed_residual);
           }
         catch (const CollectiveError &e)
           {
@@ -216,7 +390,7 @@ namespace amfrac
           }
         norm = best_norm;
         report.residuals.push_back(norm);
-        if (!std::isfinite(norm))
+        if (!std::isfinite(norm) || stagnates(report.residuals))
           return report;
       }
     report.converged = converged();
@@ -304,21 +478,58 @@ namespace amfrac
     double                             t = 0, dt = nominal;
     unsigned int                       step = 0, total_iterations = 0;
     std::vector<unsigned int>          iterations;
+    // Dissipation control takes over when a displacement step dissipates
+    // more than the target or cannot converge (a snap-back), and hands
+    // back when the structure stores rather than dissipates.
+    if (p.dissipation_control)
+      setup_dissipation_control();
+    bool   by_dissipation = false;
+    double target         = p.dissipation_increment;
+    double dtau           = target;
     while (t < end * (1 - 1e-12))
       {
-        const double trial_t = std::min(t + dt, end);
-        interfaces->set_time_step(trial_t - t);
-        const auto report = solve_newton_step(trial_t, solver);
+        double       trial_t = t;
+        NewtonReport report;
+        if (by_dissipation)
+          {
+            interfaces->set_time_step(nominal);
+            report = solve_dissipation_step(t, dtau, trial_t, solver);
+            // The structure stores rather than dissipates (elastic
+            // reloading, or the end of the crack): a displacement step.
+            if (report.converged
+                && (trial_t > end || trial_t - t > 4 * nominal))
+              {
+                trial_t = std::min(t + nominal, end);
+                interfaces->set_time_step(trial_t - t);
+                report = solve_newton_step(trial_t, solver);
+              }
+          }
+        else
+          {
+            trial_t = std::min(t + dt, end);
+            interfaces->set_time_step(trial_t - t);
+            report = solve_newton_step(trial_t, solver);
+          }
         if (!report.converged)
           {
-            dt *= 0.5;
+            if (p.dissipation_control && !by_dissipation)
+              {
+                pcout << "  t=" << trial_t << ": Newton did not converge, "
+                      << "switching to dissipation control" << std::endl;
+                by_dissipation = true;
+                dtau           = target;
+                continue;
+              }
+            double      &size = by_dissipation ? dtau : dt;
+            const double full = by_dissipation ? target : nominal;
+            size *= 0.5;
             std::ostringstream line;
             line << "  t=" << trial_t << ": Newton did not converge, |r|:";
             for (const double r : report.residuals)
               line << ' ' << std::setprecision(2) << r;
             pcout << line.str() << " (force scale " << newton->force_scale
-                  << "); step cut to " << dt << std::endl;
-            if (dt < p.minimum_step_fraction * nominal)
+                  << "); step cut to " << size << std::endl;
+            if (size < p.minimum_step_fraction * full)
               {
                 if (field_output)
                   {
@@ -346,19 +557,33 @@ namespace amfrac
         {
           std::ostringstream line;
           line << "  step " << step << " t=" << trial_t << ": " << its
-               << " Newton iteration(s), |r|:";
+               << " Newton iteration(s)"
+               << (by_dissipation ? " (dissipation control)" : "") << ", |r|:";
           for (const double r : report.residuals)
             line << ' ' << std::setprecision(2) << r;
           pcout << line.str() << std::endl;
         }
+        const double force = load_force(newton->residual);
+        if (p.dissipation_control && !by_dissipation
+            && 0.5 * (newton->converged_force * trial_t - force * t) > target)
+          {
+            by_dissipation = true;
+            dtau           = target;
+          }
+        newton->converged_force    = force;
         const auto columns         = energy_ledger();
         newton->converged_solution = solution;
         t                          = trial_t;
         auto row                   = columns;
         row.emplace_back("newton_iterations", its);
         postprocess(step, t, newton->residual, row);
-        if (its <= p.easy_iterations && dt < nominal)
-          dt = std::min(2 * dt, nominal);
+        if (its <= p.easy_iterations)
+          {
+            if (by_dissipation)
+              dtau = std::min(2 * dtau, target);
+            else
+              dt = std::min(2 * dt, nominal);
+          }
       }
     std::sort(iterations.begin(), iterations.end());
     pcout << "  " << step << " steps, " << total_iterations

@@ -192,6 +192,10 @@ namespace amfrac
       bool         line_search;
       double       minimum_step_fraction;
       unsigned int easy_iterations;
+      /** Path following by the dissipated energy (Gutierrez 2004) once a
+       * displacement step dissipates more than dissipation_increment. */
+      bool   dissipation_control;
+      double dissipation_increment;
 
       static void
       declare_parameters(ParameterHandler &prm);

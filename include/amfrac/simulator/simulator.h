@@ -141,6 +141,15 @@ namespace amfrac
       Vector previous_residual;
       Vector previous_load;
       double external_work = 0;
+      /** Dissipation control: the prescribed displacements at t = 1
+       * (hanging nodes interpolated), K_T of it (unconstrained, then
+       * condensed), a second Newton direction, and the force conjugate to
+       * t of the converged state. */
+      Vector load_pattern;
+      Vector pattern_response;
+      Vector pattern_condensed;
+      Vector pattern_increment;
+      double converged_force = 0;
     };
     std::unique_ptr<NewtonState> newton;
     bool                         solver_ready = false;
@@ -173,6 +182,32 @@ namespace amfrac
      * sets the force scale. */
     double
     condense_residual();
+    /** C^T @p full with zero constrained entries into @p condensed;
+     * returns the squared norm of the constrained entries of @p full. */
+    double
+    condense(const Vector &full, Vector &condensed);
+    /** sum_i g_i R_i over the supports: the force conjugate to t. */
+    double
+    load_force(const Vector &residual) const;
+    /** K_T(@p state) times the load pattern, into pattern_response and
+     * pattern_condensed; returns pattern . K_T pattern. */
+    double
+    pattern_derivative(const Vector &state);
+    void
+    setup_dissipation_control();
+    /** K_T(relevant_solution) @p direction, unconstrained. */
+    void
+    tangent_product(const Vector &direction, Vector &product);
+    /** One step of dissipation control from the converged state at
+     * load parameter @p t0: the new load parameter goes to @p t. */
+    NewtonReport
+    solve_dissipation_step(const double  t0,
+                           const double  increment,
+                           double       &t,
+                           LinearSolver &solver);
+    /** Factorize system_matrix (analysed once) and solve for @p x. */
+    void
+    linear_solve(LinearSolver &solver, Vector &x, const Vector &b);
     /** The residual of the linearized step from the converged state to the
      * new prescribed values (in solution); the tangent of the converged
      * state goes to system_matrix. */
