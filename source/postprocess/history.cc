@@ -1,7 +1,9 @@
 #include <amfrac/postprocess/atomic_file.h>
 #include <amfrac/postprocess/history.h>
+#include <fstream>
 #include <iomanip>
 #include <ostream>
+#include <sstream>
 #include <stdexcept>
 
 namespace amfrac
@@ -38,16 +40,29 @@ namespace amfrac
     values.push_back(numbers);
     if (!is_writer)
       return;
-    write_atomically(filename, [&](std::ostream &out) {
-      for (unsigned int c = 0; c < columns.size(); ++c)
-        out << (c ? "," : "") << columns[c];
-      out << '\n' << std::setprecision(12);
-      for (const auto &line : values)
-        {
-          for (unsigned int c = 0; c < line.size(); ++c)
-            out << (c ? "," : "") << line[c];
-          out << '\n';
-        }
-    });
+    // The first row creates the file atomically with its header; later
+    // rows are appended as one complete line each, so earlier rows are
+    // never rewritten (a long run stays O(rows), not O(rows^2)) and a crash
+    // can at most lose the line being written.
+    std::ostringstream line;
+    line << std::setprecision(12);
+    for (unsigned int c = 0; c < numbers.size(); ++c)
+      line << (c ? "," : "") << numbers[c];
+    line << '\n';
+    if (values.size() == 1)
+      {
+        write_atomically(filename, [&](std::ostream &out) {
+          for (unsigned int c = 0; c < columns.size(); ++c)
+            out << (c ? "," : "") << columns[c];
+          out << '\n' << line.str();
+        });
+        return;
+      }
+    std::ofstream     out(filename, std::ios::app);
+    const std::string text = line.str();
+    out.write(text.data(), text.size());
+    out.flush();
+    if (!out)
+      throw std::runtime_error("cannot append to '" + filename + "'");
   }
 } // namespace amfrac

@@ -494,12 +494,14 @@ namespace amfrac
           {
             interfaces->set_time_step(nominal);
             report = solve_dissipation_step(t, dtau, trial_t, solver);
-            // The structure stores rather than dissipates (elastic
-            // reloading, or the end of the crack): a displacement step.
-            if (report.converged
-                && (trial_t > end || trial_t - t > 4 * nominal))
+            // Where the structure stores rather than dissipates (elastic
+            // reloading, the end of the crack) the constraint is nearly
+            // singular and its step is huge or lands on a spurious branch
+            // (t < 0): take a displacement step instead.
+            if (!report.converged || trial_t > end || trial_t < 0
+                || std::abs(trial_t - t) > 4 * nominal)
               {
-                trial_t = std::min(t + nominal, end);
+                trial_t = std::min(t + dt, end);
                 interfaces->set_time_step(trial_t - t);
                 report = solve_newton_step(trial_t, solver);
               }
@@ -520,16 +522,22 @@ namespace amfrac
                 dtau           = target;
                 continue;
               }
-            double      &size = by_dissipation ? dtau : dt;
-            const double full = by_dissipation ? target : nominal;
-            size *= 0.5;
+            // Under dissipation control both attempts failed: cut both.
+            dt *= 0.5;
+            if (by_dissipation)
+              dtau *= 0.5;
             std::ostringstream line;
             line << "  t=" << trial_t << ": Newton did not converge, |r|:";
             for (const double r : report.residuals)
               line << ' ' << std::setprecision(2) << r;
             pcout << line.str() << " (force scale " << newton->force_scale
-                  << "); step cut to " << size << std::endl;
-            if (size < p.minimum_step_fraction * full)
+                  << "); step cut to " << dt
+                  << (by_dissipation ? " (and the dissipation increment to "
+                                         + std::to_string(dtau) + ")" :
+                                       "")
+                  << std::endl;
+            if (dt < p.minimum_step_fraction * nominal
+                && (!by_dissipation || dtau < p.minimum_step_fraction * target))
               {
                 if (field_output)
                   {
@@ -579,10 +587,8 @@ namespace amfrac
         postprocess(step, t, newton->residual, row);
         if (its <= p.easy_iterations)
           {
-            if (by_dissipation)
-              dtau = std::min(2 * dtau, target);
-            else
-              dt = std::min(2 * dt, nominal);
+            dtau = std::min(2 * dtau, target);
+            dt   = std::min(2 * dt, nominal);
           }
       }
     std::sort(iterations.begin(), iterations.end());

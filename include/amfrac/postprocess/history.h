@@ -7,9 +7,9 @@
 namespace amfrac
 {
   /**
-   * A CSV table of summary quantities, one row per step. Rank 0 rewrites
-   * the whole file atomically after each row, so the file on disk is
-   * always complete.
+   * A CSV table of summary quantities, one row per step. Rank 0 creates
+   * the file atomically with the first row and appends each further row as
+   * one complete line, so rows on disk are never rewritten.
    */
   class History
   {
@@ -20,6 +20,12 @@ namespace amfrac
      * columns. */
     void
     add_row(const std::vector<std::pair<std::string, double>> &row);
+
+    std::size_t
+    n_rows() const
+    {
+      return values.size();
+    }
 
     /** The value of @p column in row @p row; throws for unknown names. */
     double
