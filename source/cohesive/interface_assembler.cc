@@ -221,13 +221,13 @@ namespace amfrac
     unsigned long cracked = 0, candidates = 0;
     for (Element &element : elements)
       {
+        candidates += element.points.size();
         if (!std::binary_search(data.precrack_interfaces.begin(),
                                 data.precrack_interfaces.end(),
                                 data.interfaces[element.interface]))
           continue;
         for (unsigned int q = 0; q < element.points.size(); ++q)
           {
-            ++candidates;
             if (region->value(element.points[q]) == 0.)
               continue;
             ++cracked;
@@ -243,7 +243,7 @@ namespace amfrac
     candidates = Utilities::MPI::sum(candidates, comm);
     require(cracked < candidates,
             "Cohesive interfaces/Pre-crack region",
-            "covers every point of the pre-crack interfaces: the plies "
+            "covers every point of every cohesive interface: the plies "
             "would not be bonded anywhere");
     return cracked;
   }

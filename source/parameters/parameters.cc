@@ -845,7 +845,8 @@ namespace amfrac
                         Patterns::Double(0),
                         "Converged when the residual norm of the free "
                         "unknowns is below this times the norm of the "
-                        "external forces (reactions and loads).");
+                        "external forces (reactions and loads), or of the "
+                        "step's first residual if that is larger.");
       prm.declare_entry("Line search",
                         "true",
                         Patterns::Bool(),

@@ -344,8 +344,11 @@ namespace amfrac
     // and cost several iterations even in an elastic step.
     double norm = predictor_residual();
     report.residuals.push_back(norm);
-    const auto converged
-      = [&]() { return norm <= p.tolerance * n.force_scale || norm == 0; };
+    // Relative to the external forces, or to the predictor's residual when
+    // these vanish (a ply pulled off an open crack carries no load).
+    const double first = norm;
+    const auto   converged
+      = [&]() { return norm <= p.tolerance * std::max(n.force_scale, first); };
     for (unsigned int it = 0; it < p.max_iterations; ++it)
       {
         if (it > 0)

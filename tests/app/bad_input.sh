@@ -118,9 +118,64 @@ subsection Boundary conditions
   end
 end"
 
+# Cohesive interfaces (interface k lies between plies k and k+1; the base
+# laminate has 4 plies, so interfaces 0..2).
+cohesive() { # a cohesive-interfaces section with the given entries
+  printf '%s\nsubsection Cohesive interfaces\n  set Interfaces = all\n%s\nend\n' "$base" "$1"
+}
+expect interface_missing "Cohesive interfaces/Interfaces>: interface 5 does not exist" "$(cohesive 'set Interfaces = 0, 5')"
+expect interface_garbage "Cohesive interfaces/Interfaces" "$(cohesive 'set Interfaces = first')"
+expect zero_strength "Cohesive interfaces/Normal strength" "$(cohesive 'set Normal strength = 0')"
+expect negative_energy "Cohesive interfaces/Mode II fracture energy" "$(cohesive 'set Mode II fracture energy = -0.5')"
+expect gmax_below_g0 "Cohesive interfaces/Mode I fracture energy" "$(cohesive 'set Normal stiffness = 10')"
+expect negative_mu "Cohesive interfaces/Friction coefficient" "$(cohesive 'set Friction coefficient = -0.1')"
+expect precrack_not_cohesive "Cohesive interfaces/Pre-crack interfaces" "$(cohesive 'set Interfaces = 0
+  set Pre-crack interfaces = 1
+  set Pre-crack region = x < 1')"
+expect precrack_everything "Cohesive interfaces/Pre-crack region>: covers every point" "$(cohesive 'set Pre-crack interfaces = 0, 1, 2
+  set Pre-crack region = 1')"
+expect precrack_expression "Cohesive interfaces/Pre-crack region" "$(cohesive 'set Pre-crack interfaces = 1
+  set Pre-crack region = x <')"
+expect bad_control "Control" "$base
+subsection Nonlinear solver
+  set Control = arc-length
+end"
+expect dissipation_with_loads "Nonlinear solver/Control" "$(cohesive '')
+subsection Nonlinear solver
+  set Control = dissipation
+end
+subsection Boundary conditions
+  subsection x-
+    set Type = displacement
+  end
+  subsection x+
+    set Type = traction
+    set Traction = 1; 0; 0
+  end
+end"
+
+# A pre-crack region that selects nothing is a warning, not an error.
+printf '%s\n' "$(cohesive 'set Pre-crack interfaces = 1
+  set Pre-crack region = x > 1000')
+subsection Boundary conditions
+  subsection x-
+    set Type = displacement
+  end
+  subsection x+
+    set Type = displacement
+    set Displacement = 1e-3*t; 0; 0
+  end
+end" > precrack_nothing.prm
+"$amfrac" precrack_nothing.prm > precrack_nothing.stdout 2>&1
+status=$?
+if [ $status -ne 0 ] || ! grep -q "warning: parameter <Cohesive interfaces/Pre-crack region> selects no point" precrack_nothing.stdout; then
+  echo "FAIL precrack_nothing: status $status"; cat precrack_nothing.stdout; failures=$((failures + 1))
+else echo "ok   precrack_nothing: warned, ran"; fi
+rm -rf out
+
 # The same failures on two MPI ranks end promptly, with the same line.
 if command -v mpirun > /dev/null; then
-  for name in malformed_stacking singular; do
+  for name in malformed_stacking singular precrack_everything; do
     timeout 120 mpirun --allow-run-as-root --oversubscribe -np 2 "$amfrac" "$name.prm" > /dev/null 2> "$name.np2.stderr"
     status=$?
     if [ $status -eq 0 ] || [ $status -eq 124 ] || [ "$(grep -c "amfrac: error" "$name.np2.stderr")" -ne 1 ]; then

@@ -43,8 +43,9 @@ namespace amfrac
 
     /** Build the interface elements of the locally owned cells and put the
      * pre-crack in their history. Throws InputError if a cohesive interface
-     * face is hanging or if the pre-crack region covers every point of its
-     * interfaces; returns the number of pre-cracked points (all ranks). */
+     * face is hanging or if the pre-crack region covers every point of every
+     * cohesive interface (a single interface may be fully open); returns the
+     * number of pre-cracked points (all ranks). */
     unsigned long
     setup(const TiedCopyDoFs<dim> &dofs, const std::string &constants);
 

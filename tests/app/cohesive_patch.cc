@@ -1,0 +1,111 @@
+// Cohesive patch tests on a stack of blocks (one ply each), pulled or pushed
+// through the thickness, with roller supports on x = 0 and y = 0 so that the
+// stress is uniform:
+// 1. Two blocks bonded by an intact interface with a high penalty carry the
+//    same force as the same stack without interfaces (to 1e-6 relative: the
+//    interface adds the compliance 1/K), with Gauss and with Lobatto points,
+//    and the stress is uniform (sigma_zz = force / area in both blocks).
+// 2. Three blocks, the upper interface fully pre-cracked: in tension the top
+//    block transmits nothing (reaction 0 to round-off); in compression the
+//    contact penalty carries the load like the intact bond of the same
+//    stiffness (equal reactions to the Newton tolerance, 1e-7).
+#include "../check.h"
+
+#include <amfrac/parameters/parameters.h>
+#include <amfrac/simulator/simulator.h>
+#include <deal.II/base/mpi.h>
+#include <sstream>
+
+using namespace amfrac;
+
+namespace
+{
+  std::string
+  stack(const unsigned int n_blocks,
+        const double       opening,
+        const std::string &cohesive)
+  {
+    std::ostringstream s;
+    s << "set Dimension = 3\n"
+      << "subsection Geometry\n  set Stacking sequence = [0_" << n_blocks
+      << "]\n  set Ply thickness = 0.5\n  set Length = 1\n  set Width = 1\n"
+      << "  set Elements along length = 2\n  set Elements along width = 2\n"
+      << "end\n"
+      << "subsection Discretization\n  set Finite element degree = 2\nend\n"
+      << "subsection Boundary conditions\n"
+      << "  subsection x-\n    set Type = displacement\n"
+      << "    set Components = x\n  end\n"
+      << "  subsection y-\n    set Type = displacement\n"
+      << "    set Components = y\n  end\n"
+      << "  subsection z-\n    set Type = displacement\n"
+      << "    set Components = z\n  end\n"
+      << "  subsection z+\n    set Type = displacement\n"
+      << "    set Components = z\n    set Displacement = 0; 0; " << opening
+      << " * t\n  end\nend\n"
+      << "subsection Output\n  set Field format = none\n"
+      << "  set Directory = cohesive_patch_output\n"
+      << "  set Point values = 0.3, 0.6, 0.2; 0.7, 0.2, 0.8\nend\n"
+      << cohesive;
+    return s.str();
+  }
+
+  struct Result
+  {
+    double force, stress_low, stress_high;
+  };
+
+  Result
+  run(const std::string &text)
+  {
+    Simulator<3> simulator(parameters::Parameters::from_string(text),
+                           MPI_COMM_WORLD);
+    simulator.run();
+    const History &h = simulator.history();
+    return {h.value(0, "reaction_z+_z"),
+            h.value(0, "p0_stress_zz"),
+            h.value(0, "p1_stress_zz")};
+  }
+
+  std::string
+  bond(const std::string &quadrature, const std::string &extra = "")
+  {
+    return "subsection Cohesive interfaces\n  set Interfaces = all\n"
+           "  set Normal stiffness = 1e12\n  set Normal strength = 1e6\n"
+           "  set Shear strength = 1e6\n  set Mode I fracture energy = 1e6\n"
+           "  set Mode II fracture energy = 1e6\n  set Quadrature = "
+           + quadrature + "\n" + extra + "end\n";
+  }
+} // namespace
+
+int
+main(int argc, char *argv[])
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const double                     opening = 1e-3;
+
+  const Result continuum = run(stack(2, opening, ""));
+  for (const std::string quadrature : {"gauss", "lobatto"})
+    {
+      const Result bonded = run(stack(2, opening, bond(quadrature)));
+      std::cout << quadrature << ": force " << bonded.force << " (continuum "
+                << continuum.force << ")" << std::endl;
+      CHECK_CLOSE(bonded.force / continuum.force, 1, 1e-6);
+      CHECK_CLOSE(bonded.stress_low / bonded.force, 1, 1e-6);
+      CHECK_CLOSE(bonded.stress_high / bonded.force, 1, 1e-6);
+    }
+
+  // The upper interface (1) is open everywhere from the start.
+  const std::string cracked = "  set Pre-crack interfaces = 1\n"
+                              "  set Pre-crack region = 1\n";
+  const Result      pulled  = run(stack(3, opening, bond("lobatto", cracked)));
+  std::cout << "open pre-crack in tension: force " << pulled.force << std::endl;
+  CHECK(std::abs(pulled.force) < 1e-10 * std::abs(continuum.force));
+
+  const Result pushed = run(stack(3, -opening, bond("lobatto", cracked)));
+  const Result intact = run(stack(3, -opening, bond("lobatto")));
+  std::cout << "in compression: force " << pushed.force << " (intact "
+            << intact.force << ")" << std::endl;
+  CHECK(pushed.force < 0);
+  CHECK_CLOSE(pushed.force / intact.force, 1, 1e-7);
+  return amfrac_test::summary();
+}
