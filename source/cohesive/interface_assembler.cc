@@ -189,6 +189,8 @@ namespace amfrac
       }
     element.converged.resize(n_q);
     element.trial.resize(n_q);
+    element.assembled.resize(n_q);
+    element.factorized.resize(n_q);
     return element;
   }
 
@@ -328,6 +330,8 @@ namespace amfrac
     FullMatrix<double>     K;
     dealii::Vector<double> r, u;
     Tensor<2, dim>         D;
+    if (tangent)
+      unchanged = true;
     for (Element &element : elements)
       {
         const unsigned int n = element.dofs.size();
@@ -355,6 +359,8 @@ namespace amfrac
               continue;
             const Tensor<2, dim> D_global
               = transpose(F) * D * F * element.JxW[q];
+            unchanged = unchanged && D_global == element.factorized[q];
+            element.assembled[q] = D_global;
             for (unsigned int k = 0; k < n; ++k)
               {
                 const double sk = element.shape(q, k);
@@ -405,6 +411,16 @@ namespace amfrac
           }
         product.add(element.dofs, r);
       }
+  }
+
+
+
+  template <int dim>
+  void
+  CohesiveInterfaces<dim>::mark_factorized()
+  {
+    for (Element &element : elements)
+      element.factorized = element.assembled;
   }
 
 

@@ -212,13 +212,21 @@ namespace amfrac
     TimerOutput::Scope scope(timer, "linear solve");
     // The pattern never changes: analyse it once, refactorize the values
     // afterwards.
+    // The bulk never changes: if no interface point changed its tangent
+    // since the last factorization (elastic steps, open cracks), reuse it.
+    const bool unchanged
+      = Utilities::MPI::min(interfaces->tangent_unchanged() ? 1 : 0, comm) == 1;
     if (!solver_ready)
       solver.initialize(system_matrix,
                         rigid_body_modes(),
                         dim,
                         owned_node_coordinates());
-    else
+    else if (!unchanged)
       solver.update_values();
+    if (!solver_ready || !unchanged)
+      ++n_factorizations;
+    if (!solver_ready || !unchanged)
+      interfaces->mark_factorized();
     solver_ready = true;
     solver.solve(x, b);
   }
@@ -474,6 +482,8 @@ namespace amfrac
     LinearSolver solver(parameters.linear_solver);
     // Softening and friction make the tangent unsymmetric.
     solver.set_symmetric(false);
+    // A singular tangent shows up as a Newton step that does not converge.
+    solver.set_check_residual(false);
 
     const parameters::NonlinearSolver &p       = parameters.nonlinear_solver;
     const double                       end     = parameters.time.end_time;
@@ -596,7 +606,8 @@ namespace amfrac
       }
     std::sort(iterations.begin(), iterations.end());
     pcout << "  " << step << " steps, " << total_iterations
-          << " Newton iterations, median "
+          << " Newton iterations, " << n_factorizations
+          << " factorizations, median "
           << (iterations.empty() ? 0 : iterations[iterations.size() / 2])
           << " per step" << std::endl;
     timer.print_wall_time_statistics(comm);

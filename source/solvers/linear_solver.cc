@@ -150,7 +150,12 @@ namespace amfrac
                     ExcMessage("the direct solver failed"));
         report.iterations = 1;
         // A singular stiffness can pass the factorization with tiny pivots;
-        // the residual tells.
+        // the residual tells (a Newton loop checks its own residual).
+        if (!check_residual)
+          {
+            report.seconds = timer.wall_time();
+            return report;
+          }
         Vector residual(b);
         matrix->vmult(residual, x);
         residual -= b;

@@ -83,6 +83,19 @@ namespace amfrac
       time_step = dt;
     }
 
+    /** True if the tangent of the last assemble() equals, point by point,
+     * the one of the last mark_factorized() (on this rank): a solver may
+     * then reuse its factorization. */
+    bool
+    tangent_unchanged() const
+    {
+      return unchanged;
+    }
+
+    /** The tangent of the last assemble() has been factorized. */
+    void
+    mark_factorized();
+
     /** Accept the trial states as the converged history. */
     void
     commit();
@@ -143,12 +156,17 @@ namespace amfrac
       std::vector<Point<dim>>     points;
       std::vector<PointState>     converged;
       std::vector<PointState>     trial;
+      /** The point tangents (global frame, times JxW) of the last
+       * assemble() with a matrix, and of the last factorized matrix. */
+      std::vector<Tensor<2, dim>> assembled;
+      std::vector<Tensor<2, dim>> factorized;
     };
 
     const parameters::CohesiveInterfaces data;
     const cohesive::SeedLawProperties    law;
     std::vector<Element>                 elements;
     double                               time_step = 1;
+    bool                                 unchanged = false;
 
     bool
     is_cohesive(const CellIterator &cell, const unsigned int face) const;

@@ -152,7 +152,8 @@ namespace amfrac
       double converged_force = 0;
     };
     std::unique_ptr<NewtonState> newton;
-    bool                         solver_ready = false;
+    bool                         solver_ready     = false;
+    unsigned int                 n_factorizations = 0;
 
     struct NewtonReport
     {

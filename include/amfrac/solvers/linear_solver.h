@@ -50,6 +50,15 @@ namespace amfrac
     double
     update_values();
 
+    /** Whether a direct solve checks its residual (a singular matrix can
+     * factorize with tiny pivots). Newton loops that test their own
+     * residual switch it off. */
+    void
+    set_check_residual(const bool value)
+    {
+      check_residual = value;
+    }
+
     /** Whether the matrices are symmetric (CG) or not (GMRES); only the
      * iterative solver cares. */
     void
@@ -80,7 +89,8 @@ namespace amfrac
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
     std::vector<double>                                null_space_storage;
     std::vector<std::vector<double>>                   coordinates;
-    bool                                               symmetric = true;
+    bool                                               symmetric      = true;
+    bool                                               check_residual = true;
 
     /** Numeric factorization; throws CollectiveError if singular. */
     void
