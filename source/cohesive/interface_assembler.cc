@@ -118,18 +118,11 @@ namespace amfrac
   typename CohesiveInterfaces<dim>::Element
   CohesiveInterfaces<dim>::make_element(const TiedCopyDoFs<dim> &dofs,
                                         const CellIterator      &cell,
-                                        const unsigned int       face) const
+                                        const unsigned int       face,
+                                        FEFaceValues<dim>       &lower,
+                                        FEFaceValues<dim>       &upper) const
   {
-    const auto               &fe      = dofs.get_fe();
-    const unsigned int        n_nodes = fe.degree + 1;
-    const Quadrature<dim - 1> quadrature
-      = data.lobatto ? Quadrature<dim - 1>(QGaussLobatto<dim - 1>(n_nodes)) :
-                       Quadrature<dim - 1>(QGauss<dim - 1>(n_nodes));
-    const MappingQ1<dim> mapping;
-    const auto           flags = update_values | update_quadrature_points
-                       | update_JxW_values | update_normal_vectors;
-    FEFaceValues<dim>  lower(mapping, fe, quadrature, flags);
-    FEFaceValues<dim>  upper(mapping, fe, quadrature, flags);
+    const auto        &fe            = dofs.get_fe();
     const auto         neighbor      = cell->neighbor(face);
     const unsigned int neighbor_face = cell->neighbor_of_neighbor(face);
     lower.reinit(cell, face);
@@ -147,7 +140,7 @@ namespace amfrac
     dofs.get_dof_indices(neighbor, upper_dofs);
     const auto        &lower_local = dofs.dofs_on_face(face);
     const auto        &upper_local = dofs.dofs_on_face(neighbor_face);
-    const unsigned int n_q         = quadrature.size();
+    const unsigned int n_q         = lower.n_quadrature_points;
     element.shape.reinit(n_q, lower_local.size() + upper_local.size());
 
     // The face orientations of the two cells may differ: pair the points
@@ -203,13 +196,22 @@ namespace amfrac
   {
     check_conforming(dofs.copy_handler());
     elements.clear();
+    const unsigned int        n_nodes = dofs.get_fe().degree + 1;
+    const Quadrature<dim - 1> quadrature
+      = data.lobatto ? Quadrature<dim - 1>(QGaussLobatto<dim - 1>(n_nodes)) :
+                       Quadrature<dim - 1>(QGauss<dim - 1>(n_nodes));
+    const MappingQ1<dim> mapping;
+    const auto           flags = update_values | update_quadrature_points
+                       | update_JxW_values | update_normal_vectors;
+    FEFaceValues<dim> lower(mapping, dofs.get_fe(), quadrature, flags);
+    FEFaceValues<dim> upper(mapping, dofs.get_fe(), quadrature, flags);
     // Each element once, from its lower (smaller ply index) cell.
     for (const auto &cell : dofs.copy_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         for (const unsigned int f : cell->face_indices())
           if (is_cohesive(cell, f)
               && cell->neighbor(f)->material_id() > cell->material_id())
-            elements.push_back(make_element(dofs, cell, f));
+            elements.push_back(make_element(dofs, cell, f, lower, upper));
 
     const MPI_Comm comm
       = dofs.copy_handler().get_triangulation().get_communicator();

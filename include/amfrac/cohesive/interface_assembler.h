@@ -3,6 +3,7 @@
 #include <amfrac/cohesive/seed_law.h>
 #include <amfrac/dofs/tied_copy_dofs.h>
 #include <amfrac/parameters/parameters.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -174,10 +175,14 @@ namespace amfrac
     void
     check_conforming(const DoFHandler<dim> &handler) const;
 
+    /** The element of @p face of @p cell (the lower ply's side); @p lower
+     * and @p upper evaluate the two faces. */
     Element
     make_element(const TiedCopyDoFs<dim> &dofs,
                  const CellIterator      &cell,
-                 const unsigned int       face) const;
+                 const unsigned int       face,
+                 FEFaceValues<dim>       &lower,
+                 FEFaceValues<dim>       &upper) const;
 
     /** The law at one point, with the work increment from the converged
      * state. */
