@@ -465,19 +465,6 @@ namespace amfrac
   void
   Simulator<dim>::run_newton()
   {
-    if (prescribed.empty())
-      throw InputError("Boundary conditions",
-                       "no face has Type = displacement, so the plies "
-                       "can move as rigid bodies: prescribe displacements "
-                       "on at least one face");
-    pcout << "amfrac: " << dim << "D, " << laminate.n_plies() << " plies, "
-          << interfaces->interfaces().size() << " cohesive interface(s), "
-          << triangulation.n_active_cells() << " cells, " << dof_layer.n_dofs()
-          << " unknowns, Q" << dof_layer.get_fe().degree << ", "
-          << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)"
-          << std::endl;
-    prepare_output_directory();
-    collect_supports();
     setup_newton();
     LinearSolver solver(parameters.linear_solver);
     // Softening and friction make the tangent unsymmetric.

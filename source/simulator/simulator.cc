@@ -281,6 +281,23 @@ namespace amfrac
   void
   Simulator<dim>::run()
   {
+    if (prescribed.empty())
+      throw InputError("Boundary conditions",
+                       "no face has Type = displacement, so the laminate "
+                       "can move as a rigid body: prescribe displacements "
+                       "on at least one face");
+    pcout << "amfrac: " << dim << "D, " << laminate.n_plies() << " plies, ";
+    if (interfaces)
+      pcout << interfaces->interfaces().size() << " cohesive interface(s), ";
+    pcout << triangulation.n_active_cells() << " cells, " << dof_layer.n_dofs()
+          << " unknowns (" << dof_layer.n_copies() << " node copies), Q"
+          << dof_layer.get_fe().degree << ", "
+          << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)"
+          << std::endl;
+    pcout << "  DoF layer: " << dof_layer.memory_consumption() / 1e6
+          << " MB on each rank" << std::endl;
+    prepare_output_directory();
+    collect_supports();
     if (interfaces)
       run_newton();
     else
@@ -293,22 +310,6 @@ namespace amfrac
   void
   Simulator<dim>::run_linear()
   {
-    if (prescribed.empty())
-      throw InputError("Boundary conditions",
-                       "no face has Type = displacement, so the laminate "
-                       "can move as a rigid body: prescribe displacements "
-                       "on at least one face");
-    pcout << "amfrac: " << dim << "D, " << laminate.n_plies() << " plies, "
-          << triangulation.n_active_cells() << " cells, " << dof_layer.n_dofs()
-          << " unknowns (" << dof_layer.n_copies() << " node copies), Q"
-          << dof_layer.get_fe().degree << ", "
-          << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)"
-          << std::endl;
-    pcout << "  DoF layer: " << dof_layer.memory_consumption() / 1e6
-          << " MB on each rank" << std::endl;
-    prepare_output_directory();
-
-    collect_supports();
     LinearSolver solver(parameters.linear_solver);
     solution.reinit(dof_layer.locally_owned_dofs(), comm);
     system_rhs.reinit(dof_layer.locally_owned_dofs(), comm);

@@ -171,6 +171,8 @@ namespace amfrac
     make_constraints(const double               t,
                      AffineConstraints<double> &target,
                      const bool                 homogeneous) const;
+    /** The load steps of a linear scene, and of a scene with cohesive
+     * interfaces; run() has checked and collected the supports. */
     void
     run_linear();
     void
