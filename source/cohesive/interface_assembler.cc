@@ -28,6 +28,20 @@ namespace amfrac
       return p;
     }
 
+    cohesive::CamanhoDavilaProperties
+    camanho_davila_properties(const parameters::CohesiveInterfaces &data)
+    {
+      cohesive::CamanhoDavilaProperties p;
+      p.normal_strength = data.normal_strength;
+      p.shear_strength  = data.shear_strength;
+      p.G_Ic            = data.G_Ic;
+      p.G_IIc           = data.G_IIc;
+      p.bk_exponent     = data.bk_exponent;
+      p.stiffness       = data.normal_stiffness;
+      p.contact_penalty = data.contact_penalty;
+      return p;
+    }
+
     /** Rows: the unit normal @p n, then tangents (along x where possible,
      * so that on a laminate interface they are the x and y axes). */
     template <int dim>
@@ -59,6 +73,7 @@ namespace amfrac
     const parameters::CohesiveInterfaces &data)
     : data(data)
     , law(law_properties(data))
+    , camanho_davila(camanho_davila_properties(data))
   {}
 
 
@@ -284,7 +299,12 @@ namespace amfrac
                                     const Tensor<1, dim> &gap,
                                     Tensor<2, dim>       &tangent) const
   {
-    const auto response = cohesive::seed_law<dim>(gap, converged.history, law);
+    const auto response
+      = data.camanho_davila ?
+          cohesive::camanho_davila_law<dim>(gap,
+                                            converged.history,
+                                            camanho_davila) :
+          cohesive::seed_law<dim>(gap, converged.history, law);
     PointState state;
     state.history  = response.history;
     state.gap      = gap;

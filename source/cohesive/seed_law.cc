@@ -56,10 +56,10 @@ namespace amfrac
 
 
     template <int dim>
-    SeedLawResponse<dim>
-    seed_law(const Tensor<1, dim>      &gap,
-             const SeedLawHistory<dim> &history,
-             const SeedLawProperties   &p)
+    LawResponse<dim>
+    seed_law(const Tensor<1, dim>    &gap,
+             const PointHistory<dim> &history,
+             const SeedLawProperties &p)
     {
       const double       g0N = p.g0_N(), g0T = p.g0_T();
       const double       gN = gap[0];
@@ -85,7 +85,7 @@ namespace amfrac
       // secant of unloading.
       const bool loading = kappa_now >= history.kappa && kappa_now > 0;
 
-      SeedLawResponse<dim> r;
+      LawResponse<dim> r;
       r.history              = history;
       r.history.kappa        = std::max(history.kappa, kappa_now);
       const auto [S_N, dS_N] = softening(r.history.kappa, g0N, p.gmax_N());
@@ -164,13 +164,13 @@ namespace amfrac
       return r;
     }
 
-    template SeedLawResponse<2>
+    template LawResponse<2>
     seed_law<2>(const Tensor<1, 2> &,
-                const SeedLawHistory<2> &,
+                const PointHistory<2> &,
                 const SeedLawProperties &);
-    template SeedLawResponse<3>
+    template LawResponse<3>
     seed_law<3>(const Tensor<1, 3> &,
-                const SeedLawHistory<3> &,
+                const PointHistory<3> &,
                 const SeedLawProperties &);
   } // namespace cohesive
 } // namespace amfrac

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <amfrac/cohesive/camanho_davila_law.h>
 #include <amfrac/geometry/stacking_sequence.h>
 #include <amfrac/parameters/input_error.h>
 #include <amfrac/parameters/parameters.h>
@@ -632,11 +633,21 @@ namespace amfrac
                         "bottom).");
       prm.declare_entry("Law",
                         "seed",
-                        Patterns::Selection("seed"),
+                        Patterns::Selection("seed|camanho-davila"),
                         "Traction-separation law: 'seed' is the bilinear "
                         "mixed-mode law of Mohammadi & Forouzan-sepehr, eqs. "
                         "(1)-(13), with penalty contact and Coulomb "
-                        "friction after debonding.");
+                        "friction after debonding; 'camanho-davila' is the "
+                        "bilinear law of Camanho, Davila & de Moura (2003) "
+                        "with the quadratic onset criterion and "
+                        "Benzeggagh-Kenane propagation (BK exponent), one "
+                        "penalty (Normal stiffness) in all modes, contact "
+                        "in compression and no friction.");
+      prm.declare_entry("BK exponent",
+                        "2",
+                        Patterns::Double(),
+                        "Benzeggagh-Kenane eta of Law = camanho-davila: "
+                        "G_c = G_Ic + (G_IIc - G_Ic) (G_II/G)^eta.");
       prm.declare_entry("Normal strength",
                         "60",
                         Patterns::Double(),
@@ -758,6 +769,41 @@ namespace amfrac
 
 
     void
+    CohesiveInterfaces::check_camanho_davila(const std::string &section) const
+    {
+      require(bk_exponent > 0, section + "BK exponent", "must be positive");
+      require(shear_stiffness == 0 || shear_stiffness == normal_stiffness,
+              section + "Shear stiffness",
+              "Law = camanho-davila has one penalty (Normal stiffness) in "
+              "all modes: leave Shear stiffness at 0");
+      require(friction == 0,
+              section + "Friction coefficient",
+              "Law = camanho-davila has no friction phase: use Law = seed "
+              "for friction after debonding");
+      require(stick_penalty == 0,
+              section + "Stick penalty",
+              "Law = camanho-davila has no friction phase: leave it at 0");
+      cohesive::CamanhoDavilaProperties p;
+      p.normal_strength = normal_strength;
+      p.shear_strength  = shear_strength;
+      p.G_Ic            = G_Ic;
+      p.G_IIc           = G_IIc;
+      p.bk_exponent     = bk_exponent;
+      p.stiffness       = normal_stiffness;
+      p.contact_penalty = contact_penalty > 0 ? contact_penalty : 1;
+      try
+        {
+          p.validate();
+        }
+      catch (const std::invalid_argument &e)
+        {
+          require(false, section + "Mode I fracture energy", e.what());
+        }
+    }
+
+
+
+    void
     CohesiveInterfaces::parse_parameters(ParameterHandler  &prm,
                                          const unsigned int n_plies)
     {
@@ -776,6 +822,8 @@ namespace amfrac
       stick_penalty    = prm.get_double("Stick penalty");
       friction         = prm.get_double("Friction coefficient");
       viscosity        = prm.get_double("Viscosity");
+      camanho_davila   = prm.get("Law") == "camanho-davila";
+      bk_exponent      = prm.get_double("BK exponent");
       lobatto          = prm.get("Quadrature") == "lobatto";
       precrack_interfaces
         = parse_interface_list(prm.get("Pre-crack interfaces"),
@@ -803,6 +851,8 @@ namespace amfrac
       require(friction >= 0,
               section + "Friction coefficient",
               "must not be negative");
+      if (camanho_davila)
+        check_camanho_davila(section);
       if (shear_stiffness == 0)
         shear_stiffness = normal_stiffness;
       if (contact_penalty == 0)

@@ -129,6 +129,13 @@ expect zero_strength "Cohesive interfaces/Normal strength" "$(cohesive 'set Norm
 expect negative_energy "Cohesive interfaces/Mode II fracture energy" "$(cohesive 'set Mode II fracture energy = -0.5')"
 expect gmax_below_g0 "Cohesive interfaces/Mode I fracture energy" "$(cohesive 'set Normal stiffness = 10')"
 expect negative_mu "Cohesive interfaces/Friction coefficient" "$(cohesive 'set Friction coefficient = -0.1')"
+expect cd_friction "Cohesive interfaces/Friction coefficient>: Law = camanho-davila has no friction" "$(cohesive 'set Law = camanho-davila
+  set Friction coefficient = 0.3')"
+expect cd_shear_stiffness "Cohesive interfaces/Shear stiffness>: Law = camanho-davila has one penalty" "$(cohesive 'set Law = camanho-davila
+  set Shear stiffness = 5e4')"
+expect cd_bk_exponent "Cohesive interfaces/BK exponent>: must be positive" "$(cohesive 'set Law = camanho-davila
+  set BK exponent = 0')"
+expect cd_law_name "Law" "$(cohesive 'set Law = camanho')"
 expect precrack_not_cohesive "Cohesive interfaces/Pre-crack interfaces" "$(cohesive 'set Interfaces = 0
   set Pre-crack interfaces = 1
   set Pre-crack region = x < 1')"

@@ -34,7 +34,7 @@ namespace
   work_along(const Tensor<1, dim> &end, const unsigned int steps)
   {
     const SeedLawProperties p = properties();
-    SeedLawHistory<dim>     history;
+    PointHistory<dim>       history;
     double                  work = 0;
     Tensor<1, dim>          previous_traction;
     for (unsigned int s = 1; s <= steps; ++s)
@@ -51,9 +51,9 @@ namespace
    * the history held fixed. */
   template <int dim>
   void
-  check_tangent(const Tensor<1, dim>      &gap,
-                const SeedLawHistory<dim> &history,
-                const char                *branch)
+  check_tangent(const Tensor<1, dim>    &gap,
+                const PointHistory<dim> &history,
+                const char              *branch)
   {
     const SeedLawProperties p     = properties();
     const auto              r     = seed_law<dim>(gap, history, p);
@@ -101,7 +101,7 @@ main()
               1,
               1e-6);
   // Peak traction at g_0 equals the strength.
-  const SeedLawHistory<3> fresh;
+  const PointHistory<3> fresh;
   CHECK_CLOSE(seed_law<3>(Tensor<1, 3>({p.g0_N(), 0, 0}), fresh, p).traction[0],
               p.normal_strength,
               1e-9 * p.normal_strength);
@@ -129,16 +129,16 @@ main()
 
   // Debond in shear, then compress and slide: sigma_T = mu <-sigma_N>,
   // opposing the slip; in tension after debonding, no shear traction.
-  SeedLawHistory<3> history;
+  PointHistory<3> history;
   for (unsigned int s = 1; s <= 100; ++s)
     history
       = seed_law<3>(Tensor<1, 3>({0, 0.02 * s * p.gmax_T(), 0}), history, p)
           .history;
   CHECK(history.debonded);
-  const double       gN      = -2e-4;
-  const double       sigma_f = p.friction * p.contact_penalty * -gN;
-  auto               slide   = history;
-  SeedLawResponse<3> r;
+  const double   gN      = -2e-4;
+  const double   sigma_f = p.friction * p.contact_penalty * -gN;
+  auto           slide   = history;
+  LawResponse<3> r;
   for (unsigned int s = 1; s <= 50; ++s)
     {
       r     = seed_law<3>(Tensor<1, 3>({gN, 2 * p.gmax_T() + 1e-3 * s, 0}),
@@ -160,7 +160,7 @@ main()
   CHECK_CLOSE(open.traction[1], 0, 1e-12);
 
   // Tangents in every branch of eqs. (12)-(13).
-  SeedLawHistory<3> none;
+  PointHistory<3> none;
   check_tangent<3>(Tensor<1, 3>(
                      {0.3 * p.g0_N(), 0.2 * p.g0_T(), 0.1 * p.g0_T()}),
                    none,
@@ -170,7 +170,7 @@ main()
                    none,
                    "softening, mixed mode, loading");
   check_tangent<2>(Tensor<1, 2>({1.5 * p.g0_N(), 0.7 * p.g0_T()}),
-                   SeedLawHistory<2>(),
+                   PointHistory<2>(),
                    "softening 2D");
   check_tangent<3>(Tensor<1, 3>({0.5 * g1, 0, 0}), peak.history, "unloading");
   check_tangent<3>(Tensor<1, 3>({-1e-4, 1.4 * p.g0_T(), 0.2 * p.g0_T()}),

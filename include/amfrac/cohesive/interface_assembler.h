@@ -1,5 +1,6 @@
 #pragma once
 
+#include <amfrac/cohesive/camanho_davila_law.h>
 #include <amfrac/cohesive/seed_law.h>
 #include <amfrac/dofs/tied_copy_dofs.h>
 #include <amfrac/parameters/parameters.h>
@@ -133,9 +134,9 @@ namespace amfrac
     /** The state of one interface point. */
     struct PointState
     {
-      cohesive::SeedLawHistory<dim> history;
-      Tensor<1, dim>                gap;      ///< local frame
-      Tensor<1, dim>                traction; ///< local frame
+      cohesive::PointHistory<dim> history;
+      Tensor<1, dim>              gap;      ///< local frame
+      Tensor<1, dim>              traction; ///< local frame
       /** Viscous traction of the regularization (local frame). */
       Tensor<1, dim> viscous;
       double         bond_work     = 0;
@@ -163,11 +164,12 @@ namespace amfrac
       std::vector<Tensor<2, dim>> factorized;
     };
 
-    const parameters::CohesiveInterfaces data;
-    const cohesive::SeedLawProperties    law;
-    std::vector<Element>                 elements;
-    double                               time_step = 1;
-    bool                                 unchanged = false;
+    const parameters::CohesiveInterfaces    data;
+    const cohesive::SeedLawProperties       law;
+    const cohesive::CamanhoDavilaProperties camanho_davila;
+    std::vector<Element>                    elements;
+    double                                  time_step = 1;
+    bool                                    unchanged = false;
 
     bool
     is_cohesive(const CellIterator &cell, const unsigned int face) const;

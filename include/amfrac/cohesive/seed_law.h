@@ -1,6 +1,6 @@
 #pragma once
 
-#include <deal.II/base/tensor.h>
+#include <amfrac/cohesive/law_state.h>
 
 namespace amfrac
 {
@@ -53,29 +53,6 @@ namespace amfrac
       validate() const;
     };
 
-    /** History of one interface point: damage and frictional slip. */
-    template <int dim>
-    struct SeedLawHistory
-    {
-      /** Largest damage measure kappa (eq. 6) reached so far. */
-      double kappa = 0;
-      /** True once S_T(kappa) >= 1: the friction phase. */
-      bool debonded = false;
-      /** Tangential slip (the stick reference) in the friction phase. */
-      Tensor<1, dim - 1> slip;
-    };
-
-    /** Traction, consistent tangent and updated history at one point. */
-    template <int dim>
-    struct SeedLawResponse
-    {
-      /** (sigma_N, sigma_T...) in the local frame (normal first). */
-      Tensor<1, dim> traction;
-      /** d traction / d gap (not symmetric in the friction phase). */
-      Tensor<2, dim>      tangent;
-      SeedLawHistory<dim> history;
-    };
-
     /**
      * The seed's law at one point: gap g = (g_N, g_T...) in the local
      * interface frame, the history of the last converged state in, the
@@ -94,9 +71,9 @@ namespace amfrac
      *   makes friction dissipative under reversal.
      */
     template <int dim>
-    SeedLawResponse<dim>
-    seed_law(const Tensor<1, dim>      &gap,
-             const SeedLawHistory<dim> &history,
-             const SeedLawProperties   &properties);
+    LawResponse<dim>
+    seed_law(const Tensor<1, dim>    &gap,
+             const PointHistory<dim> &history,
+             const SeedLawProperties &properties);
   } // namespace cohesive
 } // namespace amfrac

@@ -169,6 +169,9 @@ namespace amfrac
       double                    contact_penalty;
       double                    stick_penalty;
       double                    friction;
+      /** Law = camanho-davila (else the seed's law) and its BK eta. */
+      bool   camanho_davila;
+      double bk_exponent;
       /** Gao-Bower viscosity of the bonded phase (0: none). */
       double viscosity;
       /** Gauss-Lobatto (nodal) interface quadrature instead of Gauss. */
@@ -181,6 +184,10 @@ namespace amfrac
       declare_parameters(ParameterHandler &prm);
       void
       parse_parameters(ParameterHandler &prm, const unsigned int n_plies);
+
+    private:
+      void
+      check_camanho_davila(const std::string &section) const;
     };
 
     /** `subsection Nonlinear solver`: Newton-Raphson for the load steps of
