@@ -199,6 +199,7 @@ namespace amfrac
     element.trial.resize(n_q);
     element.assembled.resize(n_q);
     element.factorized.resize(n_q);
+    element.status.resize(n_q, 0);
     return element;
   }
 
@@ -353,7 +354,11 @@ namespace amfrac
     dealii::Vector<double> r, u;
     Tensor<2, dim>         D;
     if (tangent)
-      unchanged = true;
+      {
+        unchanged        = true;
+        previous_changes = changes;
+        changes          = 0;
+      }
     for (Element &element : elements)
       {
         const unsigned int n = element.dofs.size();
@@ -379,6 +384,7 @@ namespace amfrac
               r(k) += element.shape(q, k) * traction[element.component[k]];
             if (!tangent)
               continue;
+            count_contact_change(element, q);
             const Tensor<2, dim> D_global
               = transpose(F) * D * F * element.JxW[q];
             unchanged = unchanged && D_global == element.factorized[q];
@@ -398,6 +404,38 @@ namespace amfrac
         if (tangent)
           constraints.distribute_local_to_global(K, element.dofs, *tangent);
       }
+  }
+
+
+
+  template <int dim>
+  void
+  CohesiveInterfaces<dim>::count_contact_change(Element           &element,
+                                                const unsigned int q)
+  {
+    const PointState &s = element.trial[q];
+    if (!s.history.debonded)
+      return;
+    // Open, sticking or slipping (the Coulomb limit reached).
+    double tangential = 0;
+    for (unsigned int i = 1; i < dim; ++i)
+      tangential += s.traction[i] * s.traction[i];
+    const double  limit  = data.friction * -s.traction[0];
+    unsigned char status = 0;
+    if (s.gap[0] < 0)
+      status = std::sqrt(tangential) < (1 - 1e-10) * limit ? 1 : 2;
+    if (status != element.status[q])
+      ++changes;
+    element.status[q] = status;
+  }
+
+
+
+  template <int dim>
+  unsigned long
+  CohesiveInterfaces<dim>::contact_changes(const MPI_Comm comm) const
+  {
+    return Utilities::MPI::sum(changes + previous_changes, comm);
   }
 
 

@@ -15,12 +15,19 @@ namespace amfrac
   {
     /** Newton cycling between branches of the law (a local snap-back)
      * rather than converging: give up early and cut the step or switch to
-     * dissipation control. */
+     * dissipation control. Not while the contact set of debonded faces
+     * still changes: semi-smooth Newton then decreases the residual slowly
+     * until the set settles. */
+    template <int dim>
     bool
-    stagnates(const std::vector<double> &residuals)
+    stagnates(const std::vector<double>     &residuals,
+              const CohesiveInterfaces<dim> &interfaces,
+              const MPI_Comm                 comm)
     {
       const std::size_t n = residuals.size();
-      return n >= 6 && residuals[n - 1] > 0.5 * residuals[n - 3];
+      // Collective: every rank evaluates the contact count.
+      const bool settled = interfaces.contact_changes(comm) == 0;
+      return n >= 6 && residuals[n - 1] > 0.5 * residuals[n - 3] && settled;
     }
   } // namespace
 
@@ -296,7 +303,7 @@ namespace amfrac
             return report;
           }
         if (it == p.max_iterations || !std::isfinite(norm)
-            || stagnates(report.residuals))
+            || stagnates(report.residuals, *interfaces, comm))
           return report;
         const double stiffness = pattern_derivative(solution);
         n.condensed_residual *= -1;
@@ -401,7 +408,8 @@ namespace amfrac
           }
         norm = best_norm;
         report.residuals.push_back(norm);
-        if (!std::isfinite(norm) || stagnates(report.residuals))
+        if (!std::isfinite(norm)
+            || stagnates(report.residuals, *interfaces, comm))
           return report;
       }
     report.converged = converged();

@@ -94,6 +94,15 @@ namespace amfrac
       return unchanged;
     }
 
+    /** Number of debonded points (all ranks) that opened, closed, started
+     * or stopped slipping over
+     * the last three assemble() calls with a tangent (two iterations):
+     * while the contact set still changes, a slow residual decrease is not
+     * a stagnating Newton iteration (semi-smooth Newton moves the edge of
+     * the contact zone a few points per iteration until it settles). */
+    unsigned long
+    contact_changes(const MPI_Comm comm) const;
+
     /** The tangent of the last assemble() has been factorized. */
     void
     mark_factorized();
@@ -162,6 +171,9 @@ namespace amfrac
        * assemble() with a matrix, and of the last factorized matrix. */
       std::vector<Tensor<2, dim>> assembled;
       std::vector<Tensor<2, dim>> factorized;
+      /** Contact status of debonded points at the last assemble() with a
+       * tangent: 0 open, 1 sticking, 2 slipping. */
+      std::vector<unsigned char> status;
     };
 
     const parameters::CohesiveInterfaces    data;
@@ -170,6 +182,10 @@ namespace amfrac
     std::vector<Element>                    elements;
     double                                  time_step = 1;
     bool                                    unchanged = false;
+    unsigned long                           changes = 0, previous_changes = 0;
+
+    void
+    count_contact_change(Element &element, const unsigned int q);
 
     bool
     is_cohesive(const CellIterator &cell, const unsigned int face) const;
