@@ -496,6 +496,47 @@ namespace amfrac
 
 
   template <int dim>
+  std::vector<InterfacePointRecord<dim>>
+  CohesiveInterfaces<dim>::output_points(const Vector &solution) const
+  {
+    using Record = InterfacePointRecord<dim>;
+    std::vector<Record> result;
+    result.reserve(n_local_points());
+    for (const Element &element : elements)
+      {
+        // The first half of the dofs is the lower face (negative shape
+        // values in the gap table), the second half the upper face.
+        const unsigned int n = element.dofs.size();
+        for (unsigned int q = 0; q < element.points.size(); ++q)
+          {
+            const PointState &s = element.converged[q];
+            Record            r;
+            r.position  = element.points[q];
+            r.interface = data.interfaces[element.interface];
+            for (unsigned int k = 0; k < n; ++k)
+              r.displacement[element.component[k]]
+                += 0.5 * (k < n / 2 ? -1 : 1) * element.shape(q, k)
+                   * solution(element.dofs[k]);
+            r.damage   = s.history.debonded ?
+                           1. :
+                         data.camanho_davila ?
+                           s.history.kappa :
+                           cohesive::seed_damage(s.history.kappa, law);
+            r.gap      = s.gap;
+            r.traction = s.traction;
+            r.status   = s.history.debonded ?
+                           (s.gap[0] < 0 ? Record::contact : Record::debonded) :
+                         r.damage > 0 ? Record::softening :
+                                        Record::intact;
+            result.push_back(r);
+          }
+      }
+    return result;
+  }
+
+
+
+  template <int dim>
   std::vector<typename CohesiveInterfaces<dim>::Ledger>
   CohesiveInterfaces<dim>::ledger(const MPI_Comm comm) const
   {

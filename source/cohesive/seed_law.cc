@@ -55,6 +55,15 @@ namespace amfrac
 
 
 
+    double
+    seed_damage(const double kappa, const SeedLawProperties &p)
+    {
+      return std::max(softening(kappa, p.g0_N(), p.gmax_N()).first,
+                      softening(kappa, p.g0_T(), p.gmax_T()).first);
+    }
+
+
+
     template <int dim>
     LawResponse<dim>
     seed_law(const Tensor<1, dim>    &gap,

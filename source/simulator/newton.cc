@@ -547,12 +547,8 @@ namespace amfrac
             if (dt < p.minimum_step_fraction * nominal
                 && (!by_dissipation || dtau < p.minimum_step_fraction * target))
               {
-                if (field_output)
-                  {
-                    relevant_solution = newton->converged_solution;
-                    dof_layer.expand(relevant_solution, copy_values);
-                    field_output->write(step, t, copy_values);
-                  }
+                relevant_solution = newton->converged_solution;
+                write_fields(step, t);
                 std::ostringstream message;
                 message << "Newton did not converge at t=" << trial_t
                         << " with the smallest step allowed by parameter "

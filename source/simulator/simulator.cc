@@ -63,6 +63,9 @@ namespace amfrac
       field_output = std::make_unique<FieldOutput<dim>>(parameters.output,
                                                         dof_layer,
                                                         plies);
+    if (parameters.output.write_vtu && interfaces)
+      interface_output
+        = std::make_unique<InterfaceOutput<dim>>(parameters.output, comm);
   }
 
 
@@ -443,10 +446,25 @@ namespace amfrac
       }
     summary->add_row(row);
 
-    if (field_output
-        && (step % parameters.output.every_n_steps == 0
-            || t >= parameters.time.end_time * (1 - 1e-12)))
-      field_output->write(step, t, copy_values);
+    if (step % parameters.output.every_n_steps == 0
+        || t >= parameters.time.end_time * (1 - 1e-12))
+      write_fields(step, t);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_fields(const unsigned int step, const double t)
+  {
+    if (!field_output)
+      return;
+    dof_layer.expand(relevant_solution, copy_values);
+    field_output->write(step, t, copy_values);
+    if (interface_output)
+      interface_output->write(step,
+                              t,
+                              interfaces->output_points(relevant_solution));
   }
 
 

@@ -6,9 +6,11 @@
 //    interface adds the compliance 1/K), with Gauss and with Lobatto points,
 //    and the stress is uniform (sigma_zz = force / area in both blocks).
 // 2. Three blocks, the upper interface fully pre-cracked: in tension the top
-//    block transmits nothing (reaction 0 to round-off); in compression the
-//    contact penalty carries the load like the intact bond of the same
-//    stiffness (equal reactions to the Newton tolerance, 1e-7).
+//    block transmits nothing (reaction 0 to round-off) and the interface
+//    output shows every point of it debonded, open by the whole opening;
+//    in compression the contact penalty carries the load like the intact
+//    bond of the same stiffness (equal reactions to the Newton tolerance,
+//    1e-7) and every point is in contact.
 #include "../check.h"
 
 #include <amfrac/parameters/parameters.h>
@@ -52,18 +54,40 @@ namespace
   struct Result
   {
     double force, stress_low, stress_high;
+    /** Points of interface 1: how many have each status, and the largest
+     * deviation of their opening and mean z displacement from @p opening
+     * and @p opening / 2 (the lower block does not move in z). */
+    unsigned int status_count[4] = {0, 0, 0, 0};
+    double       opening_error = 0, displacement_error = 0;
+    double       max_damage_interface_0 = 0;
   };
 
   Result
-  run(const std::string &text)
+  run(const std::string &text, const double opening = 0)
   {
     Simulator<3> simulator(parameters::Parameters::from_string(text),
                            MPI_COMM_WORLD);
     simulator.run();
     const History &h = simulator.history();
-    return {h.value(0, "reaction_z+_z"),
-            h.value(0, "p0_stress_zz"),
-            h.value(0, "p1_stress_zz")};
+    Result         result{h.value(0, "reaction_z+_z"),
+                  h.value(0, "p0_stress_zz"),
+                  h.value(0, "p1_stress_zz")};
+    for (const auto &p : simulator.interface_points())
+      {
+        if (p.interface == 0)
+          {
+            result.max_damage_interface_0
+              = std::max(result.max_damage_interface_0, p.damage);
+            continue;
+          }
+        ++result.status_count[p.status];
+        result.opening_error
+          = std::max(result.opening_error, std::abs(p.gap[0] - opening));
+        result.displacement_error
+          = std::max(result.displacement_error,
+                     std::abs(p.displacement[2] - opening / 2));
+      }
+    return result;
   }
 
   std::string
@@ -97,15 +121,26 @@ main(int argc, char *argv[])
   // The upper interface (1) is open everywhere from the start.
   const std::string cracked = "  set Pre-crack interfaces = 1\n"
                               "  set Pre-crack region = 1\n";
-  const Result      pulled  = run(stack(3, opening, bond("lobatto", cracked)));
+  const Result      pulled
+    = run(stack(3, opening, bond("lobatto", cracked)), opening);
   std::cout << "open pre-crack in tension: force " << pulled.force << std::endl;
   CHECK(std::abs(pulled.force) < 1e-10 * std::abs(continuum.force));
+  // The interface output: every point of interface 1 debonded and open by
+  // the whole opening, its mean displacement half of it; interface 0
+  // carries nothing and stays intact. (3x3 Lobatto points on 4 faces.)
+  using Record = InterfacePointRecord<3>;
+  CHECK(pulled.status_count[Record::debonded] == 36);
+  CHECK(pulled.status_count[Record::intact] == 0);
+  CHECK(pulled.opening_error < 1e-12);
+  CHECK(pulled.displacement_error < 1e-12);
+  CHECK(pulled.max_damage_interface_0 == 0);
 
   const Result pushed = run(stack(3, -opening, bond("lobatto", cracked)));
   const Result intact = run(stack(3, -opening, bond("lobatto")));
   std::cout << "in compression: force " << pushed.force << " (intact "
             << intact.force << ")" << std::endl;
   CHECK(pushed.force < 0);
+  CHECK(pushed.status_count[Record::contact] == 36);
   CHECK_CLOSE(pushed.force / intact.force, 1, 1e-7);
   return amfrac_test::summary();
 }

@@ -4,6 +4,7 @@
 #include <amfrac/cohesive/seed_law.h>
 #include <amfrac/dofs/tied_copy_dofs.h>
 #include <amfrac/parameters/parameters.h>
+#include <amfrac/postprocess/interface_output.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
@@ -134,6 +135,12 @@ namespace amfrac
     {
       return data.interfaces;
     }
+
+    /** The converged state of every interface point of this rank, with the
+     * mean displacement of its two faces from @p solution (locally relevant
+     * entries). */
+    std::vector<InterfacePointRecord<dim>>
+    output_points(const Vector &solution) const;
 
     /** Number of interface quadrature points on this rank. */
     std::size_t

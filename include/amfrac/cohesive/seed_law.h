@@ -70,6 +70,11 @@ namespace amfrac
      *   return map), which is the same curve under monotonic sliding and
      *   makes friction dissipative under reversal.
      */
+    /** A damage index in [0, 1] for output: the larger of the softening
+     * variables S_N, S_T of eqs. (9)-(10) at @p kappa. */
+    double
+    seed_damage(const double kappa, const SeedLawProperties &properties);
+
     template <int dim>
     LawResponse<dim>
     seed_law(const Tensor<1, dim>    &gap,

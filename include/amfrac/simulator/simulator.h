@@ -9,6 +9,7 @@
 #include <amfrac/parameters/parameters.h>
 #include <amfrac/postprocess/field_output.h>
 #include <amfrac/postprocess/history.h>
+#include <amfrac/postprocess/interface_output.h>
 #include <amfrac/postprocess/point_probe.h>
 #include <amfrac/solvers/linear_solver.h>
 #include <array>
@@ -88,6 +89,15 @@ namespace amfrac
       return interfaces.get();
     }
 
+    /** The interface points of this rank at the last converged state
+     * (empty without cohesive interfaces). */
+    std::vector<InterfacePointRecord<dim>>
+    interface_points() const
+    {
+      return interfaces ? interfaces->output_points(relevant_solution) :
+                          std::vector<InterfacePointRecord<dim>>();
+    }
+
     /** Global norm of (u_h - exact) of the last step. */
     double
     compute_error(const Function<dim>        &exact,
@@ -108,6 +118,7 @@ namespace amfrac
     std::unique_ptr<PointProbe<dim>>         probe;
     std::unique_ptr<History>                 summary;
     std::unique_ptr<FieldOutput<dim>>        field_output;
+    std::unique_ptr<InterfaceOutput<dim>>    interface_output;
     std::unique_ptr<CohesiveInterfaces<dim>> interfaces;
 
     AffineConstraints<double> constraints;
@@ -230,6 +241,10 @@ namespace amfrac
                 const double                                       t,
                 const Vector                                      &residual,
                 const std::vector<std::pair<std::string, double>> &columns);
+    /** Field output of step @p step (and the interface points) from
+     * relevant_solution, expanded to copy_values. */
+    void
+    write_fields(const unsigned int step, const double t);
     /** Per prescribed condition, the force conjugate to the load
      * parameter t: sum_i R_i dg_i/dt (the load P for a displacement
      * +-P-conjugate opening, e.g. the DCB's arms opened by +-t/2). */
