@@ -557,8 +557,11 @@ namespace amfrac
       prm.declare_entry("Field format",
                         "vtu",
                         Patterns::Selection("vtu|xdmf|vtu+xdmf|none"),
-                        "vtu: VTU per rank with PVTU/PVD records; xdmf: "
-                        "one HDF5 file per step with an XDMF record.");
+                        "vtu: VTU per rank with PVTU/PVD records (and, "
+                        "with cohesive interfaces, the interface points in "
+                        "<Base name>-interfaces.pvd: status, damage, "
+                        "opening, sliding, tractions); xdmf: one HDF5 file "
+                        "per step with an XDMF record (bulk fields only).");
       prm.declare_entry("Write every",
                         "1",
                         Patterns::Integer(1),
