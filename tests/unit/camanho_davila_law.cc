@@ -4,7 +4,7 @@
 // unloading, irreversibility when the mode mix changes, contact in
 // compression, and the tangent against central differences in every
 // branch.
-#include "../check.h"
+#include "law_checks.h"
 
 #include <amfrac/cohesive/camanho_davila_law.h>
 #include <cmath>
@@ -48,24 +48,22 @@ namespace
     return g;
   }
 
-  /** Work of the traction along a straight path 0 -> end. */
+  template <int dim>
+  LawResponse<dim>
+  law(const Tensor<1, dim> &gap, const PointHistory<dim> &history)
+  {
+    return camanho_davila_law<dim>(gap, history, properties());
+  }
+
+  /** Work along a straight path 0 -> end, which must debond the point. */
   template <int dim>
   double
   work_along(const Tensor<1, dim> &end, const unsigned int steps)
   {
-    const CamanhoDavilaProperties p = properties();
-    PointHistory<dim>             history;
-    double                        work = 0;
-    Tensor<1, dim>                previous;
-    for (unsigned int s = 1; s <= steps; ++s)
-      {
-        const auto r
-          = camanho_davila_law<dim>(end * (double(s) / steps), history, p);
-        work += 0.5 * (r.traction + previous) * end / steps;
-        previous = r.traction;
-        history  = r.history;
-      }
-    CHECK(history.debonded);
+    PointHistory<dim> final;
+    const double      work
+      = amfrac_test::work_along<dim>(law<dim>, end, steps, &final);
+    CHECK(final.debonded);
     return work;
   }
 
@@ -75,29 +73,7 @@ namespace
                 const PointHistory<dim> &history,
                 const char              *branch)
   {
-    const CamanhoDavilaProperties p = properties();
-    const auto                    r = camanho_davila_law<dim>(gap, history, p);
-    const double                  h = 1e-7 * std::max(gap.norm(), 1e-6);
-    double                        scale = 0, worst = 0;
-    for (unsigned int j = 0; j < dim; ++j)
-      {
-        Tensor<1, dim> plus = gap, minus = gap;
-        plus[j] += h;
-        minus[j] -= h;
-        const auto fd = (camanho_davila_law<dim>(plus, history, p).traction
-                         - camanho_davila_law<dim>(minus, history, p).traction)
-                        / (2 * h);
-        for (unsigned int i = 0; i < dim; ++i)
-          {
-            worst = std::max(worst, std::abs(fd[i] - r.tangent[i][j]));
-            scale = std::max(scale, std::abs(r.tangent[i][j]));
-          }
-      }
-    const bool ok = worst <= 1e-6 * scale;
-    CHECK(ok);
-    if (!ok)
-      std::cerr << "  tangent of branch '" << branch << "': error " << worst
-                << " against " << scale << std::endl;
+    amfrac_test::check_tangent<dim>(law<dim>, gap, history, branch, 1e-6);
   }
 } // namespace
 

@@ -2,7 +2,7 @@
 // energies, damaged-secant unloading, penalty contact, Coulomb friction
 // after debonding, and the tangent against central finite differences in
 // every branch.
-#include "../check.h"
+#include "law_checks.h"
 
 #include <amfrac/cohesive/seed_law.h>
 #include <stdexcept>
@@ -28,56 +28,27 @@ namespace
     return p;
   }
 
-  /** Work of the traction along a straight monotonic path 0 -> end. */
+  template <int dim>
+  LawResponse<dim>
+  law(const Tensor<1, dim> &gap, const PointHistory<dim> &history)
+  {
+    return seed_law<dim>(gap, history, properties());
+  }
+
   template <int dim>
   double
   work_along(const Tensor<1, dim> &end, const unsigned int steps)
   {
-    const SeedLawProperties p = properties();
-    PointHistory<dim>       history;
-    double                  work = 0;
-    Tensor<1, dim>          previous_traction;
-    for (unsigned int s = 1; s <= steps; ++s)
-      {
-        const auto r = seed_law<dim>(end * (double(s) / steps), history, p);
-        work += 0.5 * (r.traction + previous_traction) * end / steps;
-        previous_traction = r.traction;
-        history           = r.history;
-      }
-    return work;
+    return amfrac_test::work_along<dim>(law<dim>, end, steps);
   }
 
-  /** Analytic tangent against central differences of the traction, with
-   * the history held fixed. */
   template <int dim>
   void
   check_tangent(const Tensor<1, dim>    &gap,
                 const PointHistory<dim> &history,
                 const char              *branch)
   {
-    const SeedLawProperties p     = properties();
-    const auto              r     = seed_law<dim>(gap, history, p);
-    const double            h     = 1e-7 * std::max(gap.norm(), 1e-4);
-    double                  scale = 0, worst = 0;
-    for (unsigned int j = 0; j < dim; ++j)
-      {
-        Tensor<1, dim> plus = gap, minus = gap;
-        plus[j] += h;
-        minus[j] -= h;
-        const auto fd = (seed_law<dim>(plus, history, p).traction
-                         - seed_law<dim>(minus, history, p).traction)
-                        / (2 * h);
-        for (unsigned int i = 0; i < dim; ++i)
-          {
-            worst = std::max(worst, std::abs(fd[i] - r.tangent[i][j]));
-            scale = std::max(scale, std::abs(r.tangent[i][j]));
-          }
-      }
-    const bool ok = worst <= 1e-6 * scale;
-    CHECK(ok);
-    if (!ok)
-      std::cerr << "  tangent of branch '" << branch << "': error " << worst
-                << " against " << scale << std::endl;
+    amfrac_test::check_tangent<dim>(law<dim>, gap, history, branch, 1e-4);
   }
 } // namespace
 
