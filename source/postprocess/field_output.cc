@@ -1,5 +1,6 @@
 #include <amfrac/postprocess/atomic_file.h>
 #include <amfrac/postprocess/field_output.h>
+#include <amfrac/postprocess/vtu_series.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/numerics/data_out.h>
@@ -120,8 +121,7 @@ namespace amfrac
   {
     const auto    &dof_handler = dofs.copy_handler();
     const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
-    const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
-    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
 
     DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
@@ -146,30 +146,13 @@ namespace amfrac
     const std::string stem
       = parameters.base_name + "-" + Utilities::int_to_string(step, 5);
     if (parameters.write_vtu)
-      {
-        const std::string piece
-          = stem + "." + Utilities::int_to_string(rank, 4) + ".vtu";
-        write_atomically(path(piece),
-                         [&](std::ostream &out) { data_out.write_vtu(out); });
-        MPI_Barrier(comm);
-        if (rank == 0)
-          {
-            std::vector<std::string> pieces;
-            for (unsigned int r = 0; r < n_ranks; ++r)
-              pieces.push_back(stem + "." + Utilities::int_to_string(r, 4)
-                               + ".vtu");
-            write_atomically(path(stem + ".pvtu"), [&](std::ostream &out) {
-              data_out.write_pvtu_record(out, pieces);
-            });
-            auto records = pvd_records;
-            records.emplace_back(time, stem + ".pvtu");
-            write_atomically(path(parameters.base_name + ".pvd"),
-                             [&](std::ostream &out) {
-                               DataOutBase::write_pvd_record(out, records);
-                             });
-            pvd_records = records;
-          }
-      }
+      write_vtu_step(data_out,
+                     parameters.directory,
+                     stem,
+                     parameters.base_name + ".pvd",
+                     time,
+                     pvd_records,
+                     comm);
     if (parameters.write_xdmf)
       {
         DataOutBase::DataOutFilter filter(

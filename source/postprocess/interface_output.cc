@@ -1,5 +1,5 @@
-#include <amfrac/postprocess/atomic_file.h>
 #include <amfrac/postprocess/interface_output.h>
+#include <amfrac/postprocess/vtu_series.h>
 #include <deal.II/base/utilities.h>
 
 namespace amfrac
@@ -61,34 +61,14 @@ namespace amfrac
           patch.data(n_scalars + d, 0) = p.displacement[d];
       }
 
-    const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
-    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
-    const std::string  stem    = parameters.base_name + "-interfaces-"
-                             + Utilities::int_to_string(step, 5);
-    const auto piece = [&](const unsigned int r) {
-      return stem + "." + Utilities::int_to_string(r, 4) + ".vtu";
-    };
-    const auto path = [&](const std::string &name) {
-      return parameters.directory + "/" + name;
-    };
-    write_atomically(path(piece(rank)),
-                     [&](std::ostream &out) { this->write_vtu(out); });
-    MPI_Barrier(comm);
-    if (rank != 0)
-      return;
-    std::vector<std::string> pieces;
-    for (unsigned int r = 0; r < n_ranks; ++r)
-      pieces.push_back(piece(r));
-    write_atomically(path(stem + ".pvtu"), [&](std::ostream &out) {
-      this->write_pvtu_record(out, pieces);
-    });
-    auto records = pvd_records;
-    records.emplace_back(time, stem + ".pvtu");
-    write_atomically(path(parameters.base_name + "-interfaces.pvd"),
-                     [&](std::ostream &out) {
-                       DataOutBase::write_pvd_record(out, records);
-                     });
-    pvd_records = records;
+    write_vtu_step(*this,
+                   parameters.directory,
+                   parameters.base_name + "-interfaces-"
+                     + Utilities::int_to_string(step, 5),
+                   parameters.base_name + "-interfaces.pvd",
+                   time,
+                   pvd_records,
+                   comm);
   }
 
 
