@@ -385,7 +385,93 @@ namespace amfrac
                             "normal (Type = pressure).");
           prm.leave_subsection();
         }
+      declare_lever(prm);
       prm.leave_subsection();
+    }
+
+
+
+    void
+    BoundaryConditions::declare_lever(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Lever");
+      prm.declare_entry(
+        "Hinge face",
+        "none",
+        Patterns::Selection("none|x-|x+|y-|y+|z-|z+"),
+        "A rigid, weightless lever loads the laminate along the thickness "
+        "axis, as in the mixed-mode bending (MMB) test: it is pinned to the "
+        "hinge nodes (this face, where Hinge where is nonzero), rests on the "
+        "saddle nodes and is pushed at the load point, Lever length beyond "
+        "the saddle on the side away from the hinge. Hinge and saddle "
+        "positions are the mean coordinates of their nodes along the "
+        "laminate length (x). The lever is a linear constraint: the hinge "
+        "nodes move together, the saddle follows the lever line, so the "
+        "hinge and saddle forces keep the lever's ratio at every crack "
+        "length. none: no lever.");
+      prm.declare_entry("Hinge where",
+                        "",
+                        Patterns::Anything(),
+                        "Condition in x, y, (z) selecting the hinge nodes "
+                        "of the hinge face (empty: all).");
+      prm.declare_entry("Saddle face",
+                        "none",
+                        Patterns::Selection("none|x-|x+|y-|y+|z-|z+"),
+                        "Face on which the lever rests on the laminate.");
+      prm.declare_entry("Saddle where",
+                        "",
+                        Patterns::Anything(),
+                        "Condition in x, y, (z) selecting the saddle nodes "
+                        "of the saddle face (empty: all).");
+      prm.declare_entry("Lever length",
+                        "0",
+                        Patterns::Double(0),
+                        "Distance c from the saddle to the load point [mm] "
+                        "(0: the load acts on the saddle).");
+      prm.declare_entry("Displacement",
+                        "-t",
+                        Patterns::Anything(),
+                        "Displacement of the load point along the "
+                        "thickness axis [mm], an expression in t "
+                        "proportional to t for dissipation control. "
+                        "history.csv reports the force conjugate to t as "
+                        "force_lever and the hinge and saddle displacements "
+                        "as lever_hinge and lever_saddle.");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    BoundaryConditions::parse_lever(ParameterHandler  &prm,
+                                    const unsigned int dim)
+    {
+      prm.enter_subsection("Lever");
+      const std::string path  = "Boundary conditions/Lever/";
+      const std::string hinge = prm.get("Hinge face");
+      lever.hinge_face        = hinge == "none" ? "" : hinge;
+      lever.hinge_where       = Utilities::trim(prm.get("Hinge where"));
+      lever.saddle_face       = prm.get("Saddle face");
+      lever.saddle_where      = Utilities::trim(prm.get("Saddle where"));
+      lever.length            = prm.get_double("Lever length");
+      lever.displacement      = Utilities::trim(prm.get("Displacement"));
+      prm.leave_subsection();
+      if (!lever.active())
+        return;
+      const auto exists = [dim](const std::string &face) {
+        return face[0] - 'x' < static_cast<int>(dim);
+      };
+      require(exists(lever.hinge_face),
+              path + "Hinge face",
+              "face '" + lever.hinge_face + "' does not exist in "
+                + std::to_string(dim) + "D");
+      require(lever.saddle_face != "none",
+              path + "Saddle face",
+              "a lever needs a saddle face");
+      require(exists(lever.saddle_face),
+              path + "Saddle face",
+              "face '" + lever.saddle_face + "' does not exist in "
+                + std::to_string(dim) + "D");
     }
 
 
@@ -440,6 +526,7 @@ namespace amfrac
                       "component z does not exist in 2D");
           faces.push_back(face);
         }
+      parse_lever(prm, dim);
       prm.leave_subsection();
     }
 

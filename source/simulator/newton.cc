@@ -428,8 +428,8 @@ namespace amfrac
     Vector delta = solution;
     delta -= n.converged_solution;
     double work = 0;
-    for (unsigned int k = 0; k < prescribed.size(); ++k)
-      for (const auto i : supports[k])
+    for (const auto &support : supports)
+      for (const auto i : support)
         if (dof_layer.locally_owned_dofs().is_element(i))
           work += 0.5 * (n.previous_residual(i) + n.residual(i)) * delta(i);
     work            = Utilities::MPI::sum(work, comm);

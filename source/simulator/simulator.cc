@@ -6,6 +6,7 @@
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/numerics/vector_tools_integrate_difference.h>
 #include <filesystem>
+#include <sstream>
 
 namespace amfrac
 {
@@ -21,6 +22,7 @@ namespace amfrac
     , plies(make_ply_table<dim>(laminate, prm.materials))
     , dof_layer(triangulation, prm.discretization.degree)
     , assembler(dof_layer, plies)
+    , lever(prm.boundary_conditions)
   {
     TimerOutput::Scope scope(timer, "setup");
     make_laminate_mesh(parameters.geometry, laminate, triangulation);
@@ -28,6 +30,9 @@ namespace amfrac
       interfaces = std::make_unique<CohesiveInterfaces<dim>>(prm.cohesive);
     dof_layer.distribute(interfaces ? interfaces->released_faces() :
                                       typename TiedCopyDoFs<dim>::FaceFilter());
+    // The lever couples distant nodes: every rank sees all of them.
+    lever.collect(dof_layer);
+    dof_layer.add_relevant_dofs(lever.all_dofs());
     if (interfaces)
       {
         const auto cracked
@@ -173,6 +178,23 @@ namespace amfrac
                 }
             }
       }
+    if (!lever.active())
+      return;
+    auto lever_dofs = lever.all_dofs();
+    std::sort(lever_dofs.begin(), lever_dofs.end());
+    for (unsigned int k = 0; k < prescribed.size(); ++k)
+      for (const auto dof : supports[k])
+        if (std::binary_search(lever_dofs.begin(), lever_dofs.end(), dof))
+          {
+            std::ostringstream where;
+            where << dof_layer.support_point(dof);
+            throw InputError("Boundary conditions/Lever",
+                             "the lever node at (" + where.str()
+                               + ") is also prescribed by Boundary "
+                                 "conditions/"
+                               + prescribed[k].name);
+          }
+    supports.push_back(lever.all_dofs());
   }
 
 
@@ -208,6 +230,10 @@ namespace amfrac
                                              dof_layer.component(dof)));
             }
       }
+    lever.add_constraints(t,
+                          homogeneous,
+                          dof_layer.locally_relevant_dofs(),
+                          constraints);
     constraints.close();
   }
 
@@ -299,8 +325,10 @@ namespace amfrac
           << std::endl;
     pcout << "  DoF layer: " << dof_layer.memory_consumption() / 1e6
           << " MB on each rank" << std::endl;
-    prepare_output_directory();
+    // Supports first: a lever node that is also supported is an input
+    // error, raised before anything is written.
     collect_supports();
+    prepare_output_directory();
     if (interfaces)
       run_newton();
     else
@@ -433,6 +461,13 @@ namespace amfrac
     const auto conjugate = conjugate_forces(t, residual);
     for (unsigned int k = 0; k < prescribed.size(); ++k)
       row.emplace_back("force_" + prescribed[k].name, conjugate[k]);
+    if (lever.active())
+      {
+        const auto [hinge, saddle] = lever.displacements(relevant_solution);
+        row.emplace_back("force_lever", lever.force(t, residual, comm));
+        row.emplace_back("lever_hinge", hinge);
+        row.emplace_back("lever_saddle", saddle);
+      }
     const auto values = probe->evaluate(copy_values);
     for (unsigned int p = 0; p < values.size(); ++p)
       {

@@ -192,6 +192,39 @@ if command -v mpirun > /dev/null; then
   done
 fi
 
+# The loading lever (a 3D laminate, thickness axis z).
+lever() { # $1: lines inside subsection Boundary conditions
+  printf '%s\n' "$base" "subsection Boundary conditions
+  subsection x+
+    set Type = displacement
+  end
+$1
+end"
+}
+expect lever_no_hinge "Boundary conditions/Lever/Hinge where" "$(lever '  subsection Lever
+    set Hinge face = x-
+    set Hinge where = z > 100
+    set Saddle face = z+
+  end')"
+expect lever_no_saddle_face "Boundary conditions/Lever/Saddle face" "$(lever '  subsection Lever
+    set Hinge face = x-
+  end')"
+expect lever_saddle_is_hinge "Boundary conditions/Lever/Saddle where" "$(lever '  subsection Lever
+    set Hinge face = z+
+    set Saddle face = z+
+  end')"
+expect lever_on_support "Boundary conditions/Lever" "$(lever '  subsection Lever
+    set Hinge face = x-
+    set Saddle face = x+
+  end')"
+expect lever_2d_face "Boundary conditions/Lever/Saddle face" "$(with 'set Dimension = 3' 'set Dimension = 2' | sed '/Elements along width/d')
+subsection Boundary conditions
+  subsection Lever
+    set Hinge face = x-
+    set Saddle face = z+
+  end
+end"
+
 # A missing file and an unknown option.
 "$amfrac" no_such_file.prm > /dev/null 2> missing.stderr
 status=$?

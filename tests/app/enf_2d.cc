@@ -14,6 +14,7 @@
 //
 // usage: app_enf_2d enf_2d.prm WORKDIR
 #include "../check.h"
+#include "beam_theory.h"
 
 #include <amfrac/parameters/parameters.h>
 #include <amfrac/simulator/simulator.h>
@@ -34,9 +35,7 @@ namespace
   double
   chi()
   {
-    const double Gamma = 1.18 * std::sqrt(E11 * E22) / G13;
-    const double ratio = Gamma / (1 + Gamma);
-    return std::sqrt(E11 / (11 * G13) * (3 - 2 * ratio * ratio));
+    return amfrac_test::corrected_beam_chi(E11, E22, G13);
   }
 
   double

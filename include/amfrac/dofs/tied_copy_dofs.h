@@ -96,6 +96,15 @@ namespace amfrac
       return relevant_dofs;
     }
 
+    /** Make @p dofs locally relevant on this rank (e.g. the few dofs of a
+     * constraint that couples distant nodes, such as a loading lever). */
+    void
+    add_relevant_dofs(const std::vector<types::global_dof_index> &dofs)
+    {
+      relevant_dofs.add_indices(dofs.begin(), dofs.end());
+      relevant_dofs.compress();
+    }
+
     /** Reduced indices of the dofs of @p cell, in the cell's local order. */
     void
     get_dof_indices(const CellIterator                   &cell,

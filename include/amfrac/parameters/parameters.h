@@ -84,12 +84,34 @@ namespace amfrac
       std::string              where;
     };
 
+    /** `subsection Boundary conditions/Lever`: the rigid, weightless
+     * loading lever of a mixed-mode bending test (see Lever<dim>). */
+    struct Lever
+    {
+      /** Boundary face names; an empty hinge face means no lever. */
+      std::string hinge_face;
+      std::string hinge_where;
+      std::string saddle_face;
+      std::string saddle_where;
+      /** Distance c from the saddle to the load point [mm]. */
+      double length = 0;
+      /** Load-point displacement along the thickness axis, in t. */
+      std::string displacement;
+
+      bool
+      active() const
+      {
+        return !hinge_face.empty();
+      }
+    };
+
     /** `subsection Boundary conditions` with one subsection per face
      * (x-, x+, y-, y+, z-, z+; the thickness axis is z in 3D and y in 2D),
-     * and the body force. */
+     * the loading lever and the body force. */
     struct BoundaryConditions
     {
       std::vector<BoundaryFace> faces;
+      Lever                     lever;
       std::vector<std::string>  body_force;
       std::string               constants;
 
@@ -99,6 +121,12 @@ namespace amfrac
       declare_parameters(ParameterHandler &prm);
       void
       parse_parameters(ParameterHandler &prm, const unsigned int dim);
+
+    private:
+      static void
+      declare_lever(ParameterHandler &prm);
+      void
+      parse_lever(ParameterHandler &prm, const unsigned int dim);
     };
 
     /** `subsection Linear solver`. */

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <amfrac/assembly/elastic_assembler.h>
+#include <amfrac/assembly/lever.h>
 #include <amfrac/assembly/loads.h>
 #include <amfrac/cohesive/interface_assembler.h>
 #include <amfrac/dofs/tied_copy_dofs.h>
@@ -115,6 +116,7 @@ namespace amfrac
     ElasticAssembler<dim>                    assembler;
     Loads<dim>                               loads;
     std::vector<PrescribedDisplacement<dim>> prescribed;
+    Lever<dim>                               lever;
     std::unique_ptr<PointProbe<dim>>         probe;
     std::unique_ptr<History>                 summary;
     std::unique_ptr<FieldOutput<dim>>        field_output;
@@ -123,7 +125,8 @@ namespace amfrac
 
     AffineConstraints<double> constraints;
     /** Per prescribed condition: the reduced dofs on its face (and Where)
-     * of its components, on the whole mesh. */
+     * of its components, on the whole mesh; then, with a lever, all the
+     * lever's dofs (whose reactions do its work). */
     std::vector<std::vector<types::global_dof_index>> supports;
     TrilinosWrappers::SparseMatrix                    system_matrix;
     Vector                                            solution;
