@@ -18,40 +18,6 @@ namespace amfrac
 
 
 
-    /** The thickness-axis dofs on the boundary face @p face where @p where
-     * (if any) is nonzero, sorted and unique. */
-    template <int dim>
-    std::vector<types::global_dof_index>
-    select_nodes(const TiedCopyDoFs<dim> &dofs,
-                 const std::string       &face,
-                 const Function<dim>     *where,
-                 const std::vector<bool> &excluded)
-    {
-      const types::boundary_id             id = boundary_id_of(face);
-      std::vector<types::global_dof_index> selected;
-      std::vector<types::global_dof_index> indices(
-        dofs.get_fe().n_dofs_per_cell());
-      for (const auto &cell : dofs.copy_handler().active_cell_iterators())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->at_boundary(f) && cell->face(f)->boundary_id() == id)
-            {
-              dofs.get_dof_indices(cell, indices);
-              for (const unsigned int i : dofs.dofs_on_face(f))
-                {
-                  const auto dof = indices[i];
-                  if (dofs.component(dof) == dim - 1 && !excluded[dof]
-                      && (!where || where->value(dofs.support_point(dof)) != 0))
-                    selected.push_back(dof);
-                }
-            }
-      std::sort(selected.begin(), selected.end());
-      selected.erase(std::unique(selected.begin(), selected.end()),
-                     selected.end());
-      return selected;
-    }
-
-
-
     template <int dim>
     double
     mean_x(const TiedCopyDoFs<dim>                    &dofs,
@@ -102,13 +68,21 @@ namespace amfrac
     std::vector<bool> excluded(dofs.n_dofs(), false);
     for (const auto &line : dofs.hanging_node_constraints().get_lines())
       excluded[line.index] = true;
-    hinge = select_nodes(dofs, prm.hinge_face, hinge_where.get(), excluded);
+    // The thickness-axis dofs of a face where its condition is nonzero.
+    const auto select
+      = [&](const std::string &face, const Function<dim> *where) {
+          return dofs.boundary_dofs(boundary_id_of(face), [&](const auto dof) {
+            return dofs.component(dof) == dim - 1 && !excluded[dof]
+                   && (!where || where->value(dofs.support_point(dof)) != 0);
+          });
+        };
+    hinge = select(prm.hinge_face, hinge_where.get());
     require(!hinge.empty(),
             path + "Hinge where",
             "selects no node of face " + prm.hinge_face);
     for (const auto i : hinge)
       excluded[i] = true;
-    saddle = select_nodes(dofs, prm.saddle_face, saddle_where.get(), excluded);
+    saddle = select(prm.saddle_face, saddle_where.get());
     require(!saddle.empty(),
             path + "Saddle where",
             "selects no node of face " + prm.saddle_face

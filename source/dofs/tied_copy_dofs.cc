@@ -4,6 +4,7 @@
 #include <deal.II/fe/fe_dgq.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q1.h>
+#include <algorithm>
 #include <stdexcept>
 
 namespace amfrac
@@ -314,6 +315,33 @@ namespace amfrac
            + components.capacity() + owned_dofs.memory_consumption()
            + relevant_dofs.memory_consumption();
   }
+
+  template <int dim>
+  std::vector<types::global_dof_index>
+  TiedCopyDoFs<dim>::boundary_dofs(
+    const types::boundary_id                                  boundary_id,
+    const std::function<bool(const types::global_dof_index)> &select) const
+  {
+    std::vector<types::global_dof_index> indices(fe->n_dofs_per_cell());
+    std::vector<types::global_dof_index> found;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->at_boundary(f) && cell->face(f)->boundary_id() == boundary_id)
+          {
+            get_dof_indices(cell, indices);
+            for (const unsigned int i : face_dofs[f])
+              found.push_back(indices[i]);
+          }
+    std::sort(found.begin(), found.end());
+    found.erase(std::unique(found.begin(), found.end()), found.end());
+    found.erase(std::remove_if(found.begin(),
+                               found.end(),
+                               [&](const auto dof) { return !select(dof); }),
+                found.end());
+    return found;
+  }
+
+
 
   template class TiedCopyDoFs<2>;
   template class TiedCopyDoFs<3>;

@@ -148,36 +148,16 @@ namespace amfrac
     // a dof is constrained consistently whichever rank sees it. The set does
     // not change during a run (Where is evaluated at t = 0), so this runs
     // once; each step only evaluates the prescribed values.
-    supports.assign(prescribed.size(), {});
-    std::vector<types::global_dof_index> indices(
-      dof_layer.get_fe().n_dofs_per_cell());
-    std::vector<bool> visited(dof_layer.n_dofs(), false);
-    for (unsigned int k = 0; k < prescribed.size(); ++k)
-      {
-        const auto &condition = prescribed[k];
-        std::fill(visited.begin(), visited.end(), false);
-        for (const auto &cell :
-             dof_layer.copy_handler().active_cell_iterators())
-          for (const unsigned int f : cell->face_indices())
-            {
-              if (!cell->at_boundary(f)
-                  || cell->face(f)->boundary_id() != condition.boundary_id)
-                continue;
-              dof_layer.get_dof_indices(cell, indices);
-              for (const unsigned int i : dof_layer.dofs_on_face(f))
-                {
-                  const auto         dof = indices[i];
-                  const unsigned int c   = dof_layer.component(dof);
-                  if (visited[dof] || !condition.components[c])
-                    continue;
-                  visited[dof] = true;
-                  if (!condition.where
-                      || condition.where->value(dof_layer.support_point(dof), c)
-                           != 0.)
-                    supports[k].push_back(dof);
-                }
-            }
-      }
+    supports.clear();
+    for (const auto &condition : prescribed)
+      supports.push_back(dof_layer.boundary_dofs(
+        condition.boundary_id, [&](const types::global_dof_index dof) {
+          const unsigned int c = dof_layer.component(dof);
+          return condition.components[c]
+                 && (!condition.where
+                     || condition.where->value(dof_layer.support_point(dof), c)
+                          != 0.);
+        }));
     if (!lever.active())
       return;
     auto lever_dofs = lever.all_dofs();

@@ -105,6 +105,14 @@ namespace amfrac
       relevant_dofs.compress();
     }
 
+    /** The reduced dofs on the boundary faces with id @p boundary_id for
+     * which @p select(dof) is true, sorted, each once. Scans all cells of
+     * the replicated mesh, so every rank gets the same list. */
+    std::vector<types::global_dof_index>
+    boundary_dofs(
+      const types::boundary_id                                  boundary_id,
+      const std::function<bool(const types::global_dof_index)> &select) const;
+
     /** Reduced indices of the dofs of @p cell, in the cell's local order. */
     void
     get_dof_indices(const CellIterator                   &cell,
