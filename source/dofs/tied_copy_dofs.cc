@@ -1,10 +1,10 @@
+#include <algorithm>
 #include <amfrac/dofs/tied_copy_dofs.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_dgq.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q1.h>
-#include <algorithm>
 #include <stdexcept>
 
 namespace amfrac

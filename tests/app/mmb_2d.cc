@@ -99,13 +99,8 @@ main(int argc, char *argv[])
       std::cerr << "usage: app_mmb_2d mmb_2d.prm WORKDIR\n";
       return 2;
     }
-  std::ifstream     file(argv[1]);
-  std::stringstream text;
-  text << file.rdbuf()
-       << "\nsubsection Time\n  set End time = 7.0\n  set Number of steps = 70"
-       << "\nend\nsubsection Output\n  set Field format = none\n"
-       << "  set Directory = " << argv[2] << "\nend\n";
-  Simulator<2> simulator(parameters::Parameters::from_string(text.str()),
+  Simulator<2> simulator(parameters::Parameters::from_string(
+                           amfrac_test::scene_until(argv[1], 7.0, 70, argv[2])),
                          MPI_COMM_WORLD);
   simulator.run();
   const History    &hist = simulator.history();
