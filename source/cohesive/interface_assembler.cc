@@ -477,6 +477,26 @@ namespace amfrac
 
   template <int dim>
   void
+  CohesiveInterfaces<dim>::add_opening_gradient(Vector &gradient) const
+  {
+    dealii::Vector<double> r;
+    for (const Element &element : elements)
+      {
+        r.reinit(element.dofs.size());
+        for (unsigned int q = 0; q < element.JxW.size(); ++q)
+          if (!element.converged[q].history.debonded)
+            for (unsigned int k = 0; k < element.dofs.size(); ++k)
+              r(k) += element.shape(q, k)
+                      * element.frame[q][0][element.component[k]]
+                      * element.JxW[q];
+        gradient.add(element.dofs, r);
+      }
+  }
+
+
+
+  template <int dim>
+  void
   CohesiveInterfaces<dim>::mark_factorized()
   {
     for (Element &element : elements)

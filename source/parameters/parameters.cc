@@ -1008,20 +1008,32 @@ namespace amfrac
       prm.declare_entry(
         "Control",
         "displacement",
-        Patterns::Selection("displacement|dissipation"),
+        Patterns::Selection("displacement|dissipation|opening"),
         "displacement: steps of the load parameter t. dissipation: as "
         "displacement while the structure is (nearly) elastic, then steps of "
         "the dissipated energy (Gutierrez 2004, Verhoosel et al. 2009), which "
         "follows snap-backs of a softening interface that no displacement "
         "step can pass; t may then decrease. Needs prescribed displacements "
-        "proportional to t and no applied loads.");
+        "proportional to t and no applied loads. opening: as dissipation, "
+        "but the steps past the switch prescribe the increase of the "
+        "summed normal opening of the still bonded interface points "
+        "(Opening increment), an indirect displacement control in the "
+        "spirit of Alfano & Crisfield's local arc-length: it stays "
+        "monotonic through the local snap-backs of single points.");
       prm.declare_entry("Dissipation increment",
                         "0.01",
                         Patterns::Double(0),
                         "Energy dissipated per step under dissipation "
                         "control, in N mm (N mm per mm of width in 2D); "
                         "also the threshold at which a displacement step "
-                        "switches to it.");
+                        "switches to it (or to opening control).");
+      prm.declare_entry("Opening increment",
+                        "0.01",
+                        Patterns::Double(0),
+                        "Under opening control: the increase per step of "
+                        "the integral of the normal opening over the "
+                        "bonded interface points, in mm^3 (mm^2 per mm of "
+                        "width in 2D).");
       prm.leave_subsection();
     }
 
@@ -1036,12 +1048,18 @@ namespace amfrac
       line_search           = prm.get_bool("Line search");
       minimum_step_fraction = prm.get_double("Minimum step fraction");
       easy_iterations       = prm.get_integer("Easy step iterations");
-      dissipation_control   = prm.get("Control") == "dissipation";
+      opening_control       = prm.get("Control") == "opening";
+      dissipation_control
+        = prm.get("Control") == "dissipation" || opening_control;
       dissipation_increment = prm.get_double("Dissipation increment");
+      opening_increment     = prm.get_double("Opening increment");
       prm.leave_subsection();
       require(tolerance > 0,
               "Nonlinear solver/Residual tolerance",
               "must be positive");
+      require(!opening_control || opening_increment > 0,
+              "Nonlinear solver/Opening increment",
+              "must be positive under opening control");
       require(!dissipation_control || dissipation_increment > 0,
               "Nonlinear solver/Dissipation increment",
               "must be positive under dissipation control");

@@ -340,6 +340,77 @@ namespace amfrac
 
   template <int dim>
   typename Simulator<dim>::NewtonReport
+  Simulator<dim>::solve_opening_step(const double  t0,
+                                     const double  increment,
+                                     double       &t,
+                                     LinearSolver &solver)
+  {
+    // Unknowns (u, t) with the linear constraint a . (u - u0) = increment,
+    // a the gradient of the summed normal opening of the points bonded at
+    // the start of the step: each iteration solves K du_I = -r and
+    // K du_II = -dR/dt with one factorization and takes dt from the
+    // constraint (Alfano & Crisfield's local arc-length, linear form).
+    NewtonState                       &n = *newton;
+    const parameters::NonlinearSolver &p = parameters.nonlinear_solver;
+    Vector                             gradient;
+    gradient.reinit(dof_layer.locally_owned_dofs(),
+                    dof_layer.locally_relevant_dofs(),
+                    comm,
+                    true);
+    interfaces->add_opening_gradient(gradient);
+    gradient.compress(VectorOperation::add);
+    Vector a(dof_layer.locally_owned_dofs(), comm);
+    a                  = gradient;
+    const double start = a * n.converged_solution;
+    t                  = t0;
+    solution           = n.converged_solution;
+    NewtonReport report;
+    Vector       direction(a);
+    for (unsigned int it = 0;; ++it)
+      {
+        const double norm       = update_residual(solution, &system_matrix);
+        const double constraint = a * solution - start - increment;
+        report.residuals.push_back(norm);
+        if (it > 0 && norm <= p.tolerance * n.force_scale
+            && std::abs(constraint) <= 1e-8 * increment)
+          {
+            report.converged = true;
+            return report;
+          }
+        if (it == p.max_iterations || !std::isfinite(norm)
+            || stagnates(report.residuals, *interfaces, comm))
+          return report;
+        pattern_derivative(solution);
+        n.condensed_residual *= -1;
+        n.pattern_condensed *= -1;
+        try
+          {
+            linear_solve(solver, n.increment, n.condensed_residual);
+            solver.solve(n.pattern_increment, n.pattern_condensed);
+          }
+        catch (const CollectiveError &e)
+          {
+            report.failure = e.what();
+            return report;
+          }
+        n.increment_constraints.distribute(n.increment);
+        direction = n.pattern_increment;
+        n.increment_constraints.distribute(direction);
+        direction += n.load_pattern;
+        const double slope = a * direction;
+        if (!(std::abs(slope) > 0))
+          return report;
+        const double dt = -(constraint + a * n.increment) / slope;
+        n.increment.add(dt, direction);
+        solution += n.increment;
+        t += dt;
+      }
+  }
+
+
+
+  template <int dim>
+  typename Simulator<dim>::NewtonReport
   Simulator<dim>::solve_newton_step(const double t, LinearSolver &solver)
   {
     NewtonState                       &n = *newton;
@@ -491,9 +562,12 @@ namespace amfrac
     // back when the structure stores rather than dissipates.
     if (p.dissipation_control)
       setup_dissipation_control();
-    bool   by_dissipation = false;
-    double target         = p.dissipation_increment;
-    double dtau           = target;
+    // Dissipation or opening control, past the switch.
+    bool              by_dissipation = false;
+    const std::string control = p.opening_control ? "opening" : "dissipation";
+    const double      target
+      = p.opening_control ? p.opening_increment : p.dissipation_increment;
+    double dtau = target;
     while (t < end * (1 - 1e-12))
       {
         double       trial_t = t;
@@ -501,7 +575,9 @@ namespace amfrac
         if (by_dissipation)
           {
             interfaces->set_time_step(nominal);
-            report = solve_dissipation_step(t, dtau, trial_t, solver);
+            report = p.opening_control ?
+                       solve_opening_step(t, dtau, trial_t, solver) :
+                       solve_dissipation_step(t, dtau, trial_t, solver);
             // Where the structure stores rather than dissipates (elastic
             // reloading, the end of the crack) the constraint is nearly
             // singular and its step is huge or lands on a spurious branch
@@ -525,7 +601,7 @@ namespace amfrac
             if (p.dissipation_control && !by_dissipation)
               {
                 pcout << "  t=" << trial_t << ": Newton did not converge, "
-                      << "switching to dissipation control" << std::endl;
+                      << "switching to " << control << " control" << std::endl;
                 by_dissipation = true;
                 dtau           = target;
                 continue;
@@ -540,7 +616,7 @@ namespace amfrac
               line << ' ' << std::setprecision(2) << r;
             pcout << line.str() << " (force scale " << newton->force_scale
                   << "); step cut to " << dt
-                  << (by_dissipation ? " (and the dissipation increment to "
+                  << (by_dissipation ? " (and the " + control + " increment to "
                                          + std::to_string(dtau) + ")" :
                                        "")
                   << std::endl;
@@ -570,14 +646,16 @@ namespace amfrac
           std::ostringstream line;
           line << "  step " << step << " t=" << trial_t << ": " << its
                << " Newton iteration(s)"
-               << (by_dissipation ? " (dissipation control)" : "") << ", |r|:";
+               << (by_dissipation ? " (" + control + " control)" : "")
+               << ", |r|:";
           for (const double r : report.residuals)
             line << ' ' << std::setprecision(2) << r;
           pcout << line.str() << std::endl;
         }
         const double force = load_force(newton->residual);
         if (p.dissipation_control && !by_dissipation
-            && 0.5 * (newton->converged_force * trial_t - force * t) > target)
+            && 0.5 * (newton->converged_force * trial_t - force * t)
+                 > p.dissipation_increment)
           {
             by_dissipation = true;
             dtau           = target;

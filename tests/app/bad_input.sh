@@ -147,6 +147,11 @@ expect bad_control "Control" "$base
 subsection Nonlinear solver
   set Control = arc-length
 end"
+expect zero_opening_increment "Nonlinear solver/Opening increment" "$base
+subsection Nonlinear solver
+  set Control = opening
+  set Opening increment = 0
+end"
 expect dissipation_with_loads "Nonlinear solver/Control" "$(cohesive '')
 subsection Nonlinear solver
   set Control = dissipation

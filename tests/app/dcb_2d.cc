@@ -19,7 +19,9 @@
 //   where the process zone sits at the peak) changes the peak by less than
 //   2 %.
 //
-// usage: app_dcb_2d mi|as4peek SCENE.prm WORKDIR
+// usage: app_dcb_2d mi|as4peek SCENE.prm WORKDIR [EXTRA.prm]
+// (EXTRA.prm is appended to the scene, e.g. another path-following
+// control).
 #include "../check.h"
 
 #include <algorithm>
@@ -114,16 +116,22 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  if (argc != 4
+  if ((argc != 4 && argc != 5)
       || (std::string(argv[1]) != "mi" && std::string(argv[1]) != "as4peek"))
     {
-      std::cerr << "usage: app_dcb_2d mi|as4peek SCENE.prm WORKDIR\n";
+      std::cerr << "usage: app_dcb_2d mi|as4peek SCENE.prm WORKDIR "
+                   "[EXTRA.prm]\n";
       return 2;
     }
   data = std::string(argv[1]) == "mi" ? mi : as4peek;
   std::ifstream     file(argv[2]);
   std::stringstream text;
   text << file.rdbuf();
+  if (argc == 5)
+    {
+      std::ifstream extra(argv[4]);
+      text << '\n' << extra.rdbuf();
+    }
   const std::string workdir = argv[3];
 
   Simulator<2> simulator(scene(text.str(), data.end_time, workdir + "/full"),

@@ -73,6 +73,12 @@ namespace amfrac
     /** Add K_T(solution) @p direction to @p product (a vector with
      * writable ghosts), with the tangent of the converged history; the
      * point states are not touched. */
+    /** Add to @p gradient the derivative of the integral of the normal
+     * opening over the points that are bonded in the converged state (the
+     * controlled quantity of opening control; linear in u). */
+    void
+    add_opening_gradient(Vector &gradient) const;
+
     void
     add_tangent_product(const Vector &solution,
                         const Vector &direction,

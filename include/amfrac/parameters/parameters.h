@@ -231,6 +231,11 @@ namespace amfrac
        * displacement step dissipates more than dissipation_increment. */
       bool   dissipation_control;
       double dissipation_increment;
+      /** Control = opening: the steps past the switch prescribe the
+       * increase of the summed normal opening of the bonded interface
+       * points (opening_increment) instead of the dissipated energy. */
+      bool   opening_control = false;
+      double opening_increment;
 
       static void
       declare_parameters(ParameterHandler &prm);

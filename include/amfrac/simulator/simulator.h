@@ -222,6 +222,13 @@ namespace amfrac
                            const double  increment,
                            double       &t,
                            LinearSolver &solver);
+    /** One step of opening control: the summed normal opening of the
+     * bonded interface points grows by @p increment. */
+    NewtonReport
+    solve_opening_step(const double  t0,
+                       const double  increment,
+                       double       &t,
+                       LinearSolver &solver);
     /** Factorize system_matrix (analysed once) and solve for @p x. */
     void
     linear_solve(LinearSolver &solver, Vector &x, const Vector &b);
