@@ -273,6 +273,29 @@ namespace amfrac
 
 
   template <int dim>
+  bool
+  Simulator<dim>::solve_both_directions(LinearSolver &solver,
+                                        NewtonReport &report)
+  {
+    NewtonState &n = *newton;
+    n.condensed_residual *= -1;
+    n.pattern_condensed *= -1;
+    try
+      {
+        linear_solve(solver, n.increment, n.condensed_residual);
+        solver.solve(n.pattern_increment, n.pattern_condensed);
+      }
+    catch (const CollectiveError &e)
+      {
+        report.failure = e.what();
+        return false;
+      }
+    return true;
+  }
+
+
+
+  template <int dim>
   typename Simulator<dim>::NewtonReport
   Simulator<dim>::solve_dissipation_step(const double  t0,
                                          const double  increment,
@@ -306,18 +329,8 @@ namespace amfrac
             || stagnates(report.residuals, *interfaces, comm))
           return report;
         const double stiffness = pattern_derivative(solution);
-        n.condensed_residual *= -1;
-        n.pattern_condensed *= -1;
-        try
-          {
-            linear_solve(solver, n.increment, n.condensed_residual);
-            solver.solve(n.pattern_increment, n.pattern_condensed);
-          }
-        catch (const CollectiveError &e)
-          {
-            report.failure = e.what();
-            return report;
-          }
+        if (!solve_both_directions(solver, report))
+          return report;
         // pattern_condensed now holds -dR/dt; dP/du = (dR/dt)^T for the
         // symmetric couplings of the supported nodes.
         const double slope
@@ -381,18 +394,8 @@ namespace amfrac
             || stagnates(report.residuals, *interfaces, comm))
           return report;
         pattern_derivative(solution);
-        n.condensed_residual *= -1;
-        n.pattern_condensed *= -1;
-        try
-          {
-            linear_solve(solver, n.increment, n.condensed_residual);
-            solver.solve(n.pattern_increment, n.pattern_condensed);
-          }
-        catch (const CollectiveError &e)
-          {
-            report.failure = e.what();
-            return report;
-          }
+        if (!solve_both_directions(solver, report))
+          return report;
         n.increment_constraints.distribute(n.increment);
         direction = n.pattern_increment;
         n.increment_constraints.distribute(direction);

@@ -222,6 +222,12 @@ namespace amfrac
                            const double  increment,
                            double       &t,
                            LinearSolver &solver);
+    /** The two Newton directions of a path-following iteration with one
+     * factorization: K du_I = -r into increment, K du_II = -dR/dt into
+     * pattern_increment (after pattern_derivative()); false, with the
+     * reason in @p report, if the linear solver failed. */
+    bool
+    solve_both_directions(LinearSolver &solver, NewtonReport &report);
     /** One step of opening control: the summed normal opening of the
      * bonded interface points grows by @p increment. */
     NewtonReport
