@@ -79,7 +79,8 @@ namespace amfrac
     }
 
   private:
-    const parameters::Lever             &prm;
+    /** A copy: the simulator may be built from a temporary. */
+    const parameters::Lever              prm;
     std::shared_ptr<Function<dim>>       load_point;
     std::shared_ptr<Function<dim>>       hinge_where;
     std::shared_ptr<Function<dim>>       saddle_where;
