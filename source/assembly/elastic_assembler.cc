@@ -1,7 +1,9 @@
 #include <amfrac/assembly/elastic_assembler.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
 
 namespace amfrac
 {
@@ -298,6 +300,117 @@ namespace amfrac
     energies.load_work     = Utilities::MPI::sum(energies.load_work, comm);
     return energies;
   }
+
+  template <int dim>
+  double
+  ElasticAssembler<dim>::internal_force(const Vector &solution,
+                                        Vector       &force) const
+  {
+    const unsigned int     n = dofs.get_fe().n_dofs_per_cell();
+    Scratch                scratch(dofs.get_fe(), quadrature_degree);
+    dealii::Vector<double> f(n);
+    std::vector<types::global_dof_index> indices(n);
+    std::vector<double>                  u(n);
+    double                               energy = 0;
+    force                                       = 0;
+    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          auto &fe_values = scratch.fe_values;
+          fe_values.reinit(cell);
+          dofs.get_dof_indices(cell, indices);
+          for (unsigned int i = 0; i < n; ++i)
+            u[i] = solution(indices[i]);
+          const auto &C = plies[cell->material_id()].stiffness;
+          f             = 0;
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              SymmetricTensor<2, dim> strain;
+              for (unsigned int i = 0; i < n; ++i)
+                strain
+                  += u[i]
+                     * fe_values[scratch.displacement].symmetric_gradient(i, q);
+              const SymmetricTensor<2, dim> stress = C * strain;
+              energy += 0.5 * (stress * strain) * fe_values.JxW(q);
+              for (unsigned int i = 0; i < n; ++i)
+                f(i)
+                  += (fe_values[scratch.displacement].symmetric_gradient(i, q)
+                      * stress)
+                     * fe_values.JxW(q);
+            }
+          force.add(indices, f);
+        }
+    force.compress(VectorOperation::add);
+    const MPI_Comm comm
+      = dofs.copy_handler().get_triangulation().get_communicator();
+    return Utilities::MPI::sum(energy, comm);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticAssembler<dim>::lumped_mass(Vector &mass) const
+  {
+    const auto                          &fe = dofs.get_fe();
+    const unsigned int                   n  = fe.n_dofs_per_cell();
+    FEValues<dim>                        fe_values(fe,
+                            QGaussLobatto<dim>(fe.degree + 1),
+                            update_values | update_JxW_values);
+    dealii::Vector<double>               m(n);
+    std::vector<types::global_dof_index> indices(n);
+    mass = 0;
+    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          dofs.get_dof_indices(cell, indices);
+          const double density = plies[cell->material_id()].density;
+          m                    = 0;
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            for (unsigned int i = 0; i < n; ++i)
+              m(i) += density * fe_values.shape_value(i, q) * fe_values.JxW(q);
+          mass.add(indices, m);
+        }
+    mass.compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  double
+  ElasticAssembler<dim>::max_frequency_squared(
+    const typename TiedCopyDoFs<dim>::CellIterator &cell) const
+  {
+    const auto        &fe = dofs.get_fe();
+    const unsigned int n  = fe.n_dofs_per_cell();
+    Scratch            scratch(fe, quadrature_degree);
+    scratch.fe_values.reinit(cell);
+    FullMatrix<double> K(n, n);
+    cell_matrix(scratch, cell->material_id(), K);
+    FEValues<dim> lobatto(fe,
+                          QGaussLobatto<dim>(fe.degree + 1),
+                          update_values | update_JxW_values);
+    lobatto.reinit(cell);
+    std::vector<double> m(n, 0.);
+    for (const unsigned int q : lobatto.quadrature_point_indices())
+      for (unsigned int i = 0; i < n; ++i)
+        m[i] += plies[cell->material_id()].density * lobatto.shape_value(i, q)
+                * lobatto.JxW(q);
+    // Largest eigenvalue of M^-1/2 K M^-1/2 (symmetric, positive
+    // semi-definite): a dense eigenproblem of the element's size.
+    LAPACKFullMatrix<double> A(n, n);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < n; ++j)
+        A(i, j) = K(i, j) / std::sqrt(m[i] * m[j]);
+    A.compute_eigenvalues();
+    double largest = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      largest = std::max(largest, A.eigenvalue(i).real());
+    return largest;
+  }
+
+
 
   template class ElasticAssembler<2>;
   template class ElasticAssembler<3>;

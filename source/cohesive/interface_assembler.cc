@@ -7,6 +7,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <limits>
+#include <map>
 
 namespace amfrac
 {
@@ -610,6 +611,60 @@ namespace amfrac
       }
     return result;
   }
+
+  template <int dim>
+  double
+  CohesiveInterfaces<dim>::max_frequency_squared(const Vector  &mass,
+                                                 Point<dim>    &where,
+                                                 const MPI_Comm comm) const
+  {
+    const double shear = data.shear_stiffness;
+    const double k
+      = std::max({data.normal_stiffness,
+                  shear,
+                  data.contact_penalty,
+                  data.stick_penalty > 0 ? data.stick_penalty : shear});
+    // Row sums |K_ij| of the penalty springs, per dof; the same dof may
+    // sit in several elements.
+    std::map<types::global_dof_index, double>     row_sum;
+    std::map<types::global_dof_index, Point<dim>> position;
+    for (const Element &e : elements)
+      for (unsigned int q = 0; q < e.JxW.size(); ++q)
+        for (unsigned int a = 0; a < e.dofs.size(); ++a)
+          {
+            if (e.shape(q, a) == 0)
+              continue;
+            double row = 0;
+            for (unsigned int b = 0; b < e.dofs.size(); ++b)
+              if (e.component[b] == e.component[a])
+                row += std::abs(e.shape(q, b));
+            row_sum[e.dofs[a]] += k * e.JxW[q] * std::abs(e.shape(q, a)) * row;
+            position[e.dofs[a]] = e.points[q];
+          }
+    double worst = 0;
+    for (const auto &[dof, row] : row_sum)
+      if (row / mass(dof) > worst)
+        {
+          worst = row / mass(dof);
+          where = position[dof];
+        }
+    // The rank with the largest bound reports its position.
+    const double       global = Utilities::MPI::max(worst, comm);
+    const unsigned int owner
+      = Utilities::MPI::min(worst == global ?
+                              Utilities::MPI::this_mpi_process(comm) :
+                              Utilities::MPI::n_mpi_processes(comm),
+                            comm);
+    std::vector<double> point(dim);
+    for (unsigned int d = 0; d < dim; ++d)
+      point[d] = where[d];
+    point = Utilities::MPI::broadcast(comm, point, owner);
+    for (unsigned int d = 0; d < dim; ++d)
+      where[d] = point[d];
+    return global;
+  }
+
+
 
   template class CohesiveInterfaces<2>;
   template class CohesiveInterfaces<3>;

@@ -611,7 +611,28 @@ namespace amfrac
       prm.declare_entry("Number of steps",
                         "1",
                         Patterns::Integer(1),
-                        "Number of load steps from t = 0 to End time.");
+                        "Number of load steps from t = 0 to End time; "
+                        "under explicit dynamics, the number of output "
+                        "intervals (history rows and field files).");
+      prm.declare_entry("Time integration",
+                        "static",
+                        Patterns::Selection("static|explicit"),
+                        "static: load steps in pseudo-time t (linear "
+                        "solve, or Newton with cohesive interfaces). "
+                        "explicit: central differences (velocity Verlet) "
+                        "with a lumped mass in physical time t [s]; no "
+                        "stiffness matrix and no linear solver are built.");
+      prm.declare_entry("Safety factor",
+                        "0.8",
+                        Patterns::Double(0, 1),
+                        "Explicit: the time step is this times the "
+                        "estimated stable step 2 / omega_max.");
+      prm.declare_entry("Time step",
+                        "0",
+                        Patterns::Double(0),
+                        "Explicit: a fixed time step in s; 0 takes Safety "
+                        "factor times the estimated stable step. A fixed "
+                        "step above the estimate is an input error.");
       prm.leave_subsection();
     }
 
@@ -621,10 +642,14 @@ namespace amfrac
     Time::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Time");
-      end_time = prm.get_double("End time");
-      n_steps  = prm.get_integer("Number of steps");
+      end_time          = prm.get_double("End time");
+      n_steps           = prm.get_integer("Number of steps");
+      explicit_dynamics = prm.get("Time integration") == "explicit";
+      safety_factor     = prm.get_double("Safety factor");
+      time_step         = prm.get_double("Time step");
       prm.leave_subsection();
       require(end_time > 0, "Time/End time", "must be positive");
+      require(safety_factor > 0, "Time/Safety factor", "must be positive");
     }
 
 

@@ -518,6 +518,23 @@ namespace amfrac
 
     std::vector<std::pair<std::string, double>> columns
       = {{"external_work", n.external_work}, {"strain_energy", strain_energy}};
+    const double interface_work = add_interface_columns(columns);
+    columns.emplace_back("balance_error",
+                         n.external_work - strain_energy - interface_work);
+    n.previous_residual = n.residual;
+    n.previous_load     = n.external_load;
+    return columns;
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::add_interface_columns(
+    std::vector<std::pair<std::string, double>> &columns)
+  {
+    if (!interfaces)
+      return 0;
     const auto ledger            = interfaces->ledger(comm);
     double     interface_work    = 0;
     double     interface_storage = 0;
@@ -534,11 +551,7 @@ namespace amfrac
         columns.emplace_back("min_opening_i" + name, ledger[k].min_opening);
       }
     columns.emplace_back("interface_stored", interface_storage);
-    columns.emplace_back("balance_error",
-                         n.external_work - strain_energy - interface_work);
-    n.previous_residual = n.residual;
-    n.previous_load     = n.external_load;
-    return columns;
+    return interface_work;
   }
 
 
@@ -588,6 +601,13 @@ namespace amfrac
             if (!report.converged || trial_t > end || trial_t < 0
                 || std::abs(trial_t - t) > 4 * nominal)
               {
+                std::ostringstream line;
+                line << "  t=" << trial_t << ": " << control
+                     << " control did not converge or left the path, |r|:";
+                for (const double r : report.residuals)
+                  line << ' ' << std::setprecision(2) << r;
+                pcout << line.str() << "; trying a displacement step"
+                      << std::endl;
                 trial_t = std::min(t + dt, end);
                 interfaces->set_time_step(trial_t - t);
                 report = solve_newton_step(trial_t, solver);

@@ -290,7 +290,7 @@ namespace amfrac
   void
   Simulator<dim>::run()
   {
-    if (prescribed.empty())
+    if (prescribed.empty() && !parameters.time.explicit_dynamics)
       throw InputError("Boundary conditions",
                        "no face has Type = displacement, so the laminate "
                        "can move as a rigid body: prescribe displacements "
@@ -309,7 +309,9 @@ namespace amfrac
     // error, raised before anything is written.
     collect_supports();
     prepare_output_directory();
-    if (interfaces)
+    if (parameters.time.explicit_dynamics)
+      run_explicit();
+    else if (interfaces)
       run_newton();
     else
       run_linear();

@@ -67,6 +67,18 @@ expect negative_strength "Materials/Yt" "$base
 subsection Materials
   set Yt = 0
 end"
+expect explicit_no_density "Materials/Density" "$base
+subsection Materials
+  set Density = 0
+end
+subsection Time
+  set Time integration = explicit
+end"
+expect explicit_step_too_large "Time/Time step" "$base
+subsection Time
+  set Time integration = explicit
+  set Time step = 1
+end"
 expect unknown_material "unknown material 'glass'" "$(with '\[0/90\]s' '[0@glass/90]')"
 expect face_not_in_2d "Boundary conditions/z-/Type" "$(with 'set Dimension = 3' 'set Dimension = 2')
 subsection Boundary conditions

@@ -68,6 +68,24 @@ namespace amfrac
                      const Vector     &relevant_solution,
                      Vector           &residual) const;
 
+    /** Explicit dynamics: @p force = K u from the stresses, cell by cell,
+     * without a matrix (compressed); returns the strain energy. */
+    double
+    internal_force(const Vector &relevant_solution, Vector &force) const;
+
+    /** The lumped mass of every reduced dof: the consistent mass
+     * integrated with the Gauss-Lobatto rule on the element's nodes,
+     * which is diagonal and positive for Q1 and Q2 (a row sum with the
+     * Gauss rule would give Q2 corner nodes negative mass). */
+    void
+    lumped_mass(Vector &mass) const;
+
+    /** omega_max^2 of one element alone, free, with its lumped mass: by
+     * Irons' theorem the largest over the elements bounds the mesh's. */
+    double
+    max_frequency_squared(
+      const typename TiedCopyDoFs<dim>::CellIterator &cell) const;
+
   private:
     const TiedCopyDoFs<dim>               &dofs;
     const std::vector<PlyProperties<dim>> &plies;

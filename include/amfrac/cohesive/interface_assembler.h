@@ -148,6 +148,16 @@ namespace amfrac
     std::vector<InterfacePointRecord<dim>>
     output_points(const Vector &solution) const;
 
+    /** Explicit dynamics: a bound on omega^2 of the interface springs
+     * against the lumped masses (@p mass, locally relevant), by
+     * Gershgorin's theorem on M^-1 K_penalty with the stiffest of the
+     * normal, shear, contact and stick penalties; the largest over all
+     * ranks, and where it occurs (@p where). */
+    double
+    max_frequency_squared(const Vector  &mass,
+                          Point<dim>    &where,
+                          const MPI_Comm comm) const;
+
     /** Number of interface quadrature points on this rank. */
     std::size_t
     n_local_points() const;

@@ -157,6 +157,11 @@ namespace amfrac
     {
       double       end_time;
       unsigned int n_steps;
+      /** Central differences with a lumped mass instead of static steps. */
+      bool   explicit_dynamics;
+      double safety_factor;
+      /** Explicit: a fixed time step (0: the estimated stable one). */
+      double time_step;
 
       static void
       declare_parameters(ParameterHandler &prm);

@@ -191,6 +191,23 @@ namespace amfrac
     run_linear();
     void
     run_newton();
+    /** Time integration = explicit: central differences, lumped mass. */
+    void
+    run_explicit();
+    /** Inputs an explicit run cannot take (throws InputError). */
+    void
+    check_explicit_input() const;
+    /** 2 / omega_max from the elements and the interface penalties
+     * (logged with where each bound is attained). */
+    double
+    stable_time_step(const Vector &relevant_mass);
+    /** The prescribed displacements at @p t into the supported dofs. */
+    void
+    impose_prescribed(const double t, Vector &u) const;
+    /** The per-interface ledger columns; returns the summed work of the
+     * interface tractions. */
+    double
+    add_interface_columns(std::vector<std::pair<std::string, double>> &columns);
     void
     setup_newton();
     NewtonReport

@@ -1,0 +1,273 @@
+// The explicit path of Simulator (Time integration = explicit): central
+// differences in velocity-Verlet form with a lumped mass. Nothing of the
+// static path is built: no stiffness matrix, no linear solver; the bulk
+// force comes from the stresses cell by cell and the interface force from
+// the current jump and history.
+#include <algorithm>
+#include <amfrac/parameters/input_error.h>
+#include <amfrac/simulator/simulator.h>
+#include <cmath>
+#include <deal.II/base/mpi.h>
+
+namespace amfrac
+{
+  template <int dim>
+  void
+  Simulator<dim>::check_explicit_input() const
+  {
+    if (dof_layer.hanging_node_constraints().n_constraints() > 0)
+      throw InputError("Time/Time integration",
+                       "explicit dynamics needs a mesh without hanging "
+                       "nodes (locally refined meshes are not supported "
+                       "yet)");
+    if (lever.active())
+      throw InputError("Boundary conditions/Lever",
+                       "a lever is a static constraint; it is not "
+                       "available with Time integration = explicit");
+    for (const auto &ply : plies)
+      if (!(ply.density > 0))
+        throw InputError("Materials/Density",
+                         "explicit dynamics needs a positive density in "
+                         "every ply (t/mm^3, e.g. 1.6e-9)");
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::stable_time_step(const Vector &relevant_mass)
+  {
+    // Bulk: by Irons' theorem the largest element omega^2 bounds the
+    // mesh's. Each ply's smallest elements (shortest edge) are examined
+    // exactly (power iteration on the element's M^-1 K).
+    double     bulk = 0;
+    Point<dim> bulk_where;
+    using Cell = typename TiedCopyDoFs<dim>::CellIterator;
+    std::map<unsigned int, std::vector<std::pair<double, Cell>>> by_ply;
+    for (const auto &cell : dof_layer.copy_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        by_ply[cell->material_id()].emplace_back(
+          cell->minimum_vertex_distance(), cell);
+    for (auto &[ply, cells] : by_ply)
+      {
+        const std::size_t n = std::min<std::size_t>(4, cells.size());
+        std::partial_sort(cells.begin(),
+                          cells.begin() + n,
+                          cells.end(),
+                          [](const auto &a, const auto &b) {
+                            return a.first < b.first;
+                          });
+        for (std::size_t i = 0; i < n; ++i)
+          {
+            const double w2 = assembler.max_frequency_squared(cells[i].second);
+            if (w2 > bulk)
+              bulk = w2, bulk_where = cells[i].second->center();
+          }
+      }
+    const double global_bulk = Utilities::MPI::max(bulk, comm);
+    {
+      const unsigned int owner
+        = Utilities::MPI::min(bulk == global_bulk ?
+                                Utilities::MPI::this_mpi_process(comm) :
+                                Utilities::MPI::n_mpi_processes(comm),
+                              comm);
+      std::vector<double> p(dim);
+      for (unsigned int d = 0; d < dim; ++d)
+        p[d] = bulk_where[d];
+      p = Utilities::MPI::broadcast(comm, p, owner);
+      for (unsigned int d = 0; d < dim; ++d)
+        bulk_where[d] = p[d];
+    }
+    // Interfaces: the penalty springs against the lumped masses. Both in
+    // the mass inner product, so omega^2 of the sum is at most the sum.
+    double     springs = 0;
+    Point<dim> spring_where;
+    if (interfaces)
+      springs
+        = interfaces->max_frequency_squared(relevant_mass, spring_where, comm);
+    const double stable = 2. / std::sqrt(global_bulk + springs);
+    pcout << "  stable time step " << stable << " s: elements alone "
+          << 2. / std::sqrt(global_bulk) << " s (at " << bulk_where << ")";
+    if (interfaces)
+      pcout << ", interface penalties alone " << 2. / std::sqrt(springs)
+            << " s (at " << spring_where << "); controlled by the "
+            << (springs > global_bulk ? "interfaces" : "elements");
+    pcout << std::endl;
+    return stable;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::impose_prescribed(const double t, Vector &u) const
+  {
+    for (unsigned int k = 0; k < prescribed.size(); ++k)
+      {
+        prescribed[k].value->set_time(t);
+        for (const auto i : supports[k])
+          if (dof_layer.locally_owned_dofs().is_element(i))
+            u(i) = prescribed[k].value->value(dof_layer.support_point(i),
+                                              dof_layer.component(i));
+      }
+    u.compress(VectorOperation::insert);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::run_explicit()
+  {
+    check_explicit_input();
+    const IndexSet &owned    = dof_layer.locally_owned_dofs();
+    const IndexSet &relevant = dof_layer.locally_relevant_dofs();
+    Vector mass(owned, comm), velocity(owned, comm), acceleration(owned, comm),
+      force(owned, comm), load(owned, comm), previous_load(owned, comm),
+      reaction(owned, comm), previous_reaction(owned, comm), interface_force;
+    interface_force.reinit(owned, relevant, comm, true);
+    solution.reinit(owned, comm);
+    relevant_solution.reinit(owned, relevant, comm);
+    {
+      TimerOutput::Scope scope(timer, "lumped mass");
+      assembler.lumped_mass(mass);
+    }
+    Vector relevant_mass(owned, relevant, comm);
+    relevant_mass = mass;
+
+    const double end      = parameters.time.end_time;
+    const double interval = end / parameters.time.n_steps;
+    double       stable;
+    {
+      TimerOutput::Scope scope(timer, "stable time step");
+      stable = stable_time_step(relevant_mass);
+    }
+    double dt = parameters.time.safety_factor * stable;
+    if (parameters.time.time_step > 0)
+      {
+        if (parameters.time.time_step > stable)
+          throw InputError("Time/Time step",
+                           "the fixed step "
+                             + std::to_string(parameters.time.time_step)
+                             + " s exceeds the estimated stable step "
+                             + std::to_string(stable) + " s");
+        dt = parameters.time.time_step;
+      }
+    // Whole steps per output interval, so that output lands on its times.
+    const unsigned int substeps = std::ceil(interval / dt * (1 - 1e-12));
+    dt                          = interval / substeps;
+    pcout << "  time step " << dt << " s (" << dt / stable
+          << " of the stable step), " << substeps * parameters.time.n_steps
+          << " steps" << std::endl;
+
+    // Free dofs move by M a = f_ext - f_int; the supports move as
+    // prescribed and react with f_int - f_ext (the inertia of their own
+    // nodes is the support's: it stays out of the ledger, as does their
+    // kinetic energy).
+    Vector free_inverse_mass(mass), support_mask(owned, comm);
+    for (const auto i : owned)
+      free_inverse_mass(i) = 1. / mass(i);
+    for (const auto &support : supports)
+      for (const auto i : support)
+        if (owned.is_element(i))
+          free_inverse_mass(i) = 0, support_mask(i) = 1;
+    free_inverse_mass.compress(VectorOperation::insert);
+    support_mask.compress(VectorOperation::insert);
+    Vector free_mass(mass);
+    for (const auto i : owned)
+      if (free_inverse_mass(i) == 0)
+        free_mass(i) = 0;
+    free_mass.compress(VectorOperation::insert);
+
+    AffineConstraints<double> none;
+    none.close();
+    double strain_energy = 0;
+    // Forces, reaction and acceleration of the state in `solution` at t.
+    auto evaluate = [&](const double t) {
+      relevant_solution = solution;
+      {
+        TimerOutput::Scope scope(timer, "bulk force");
+        strain_energy = assembler.internal_force(relevant_solution, force);
+      }
+      if (interfaces)
+        {
+          TimerOutput::Scope scope(timer, "interfaces");
+          interface_force = 0;
+          interfaces->assemble(relevant_solution,
+                               interface_force,
+                               none,
+                               nullptr);
+          interface_force.compress(VectorOperation::add);
+          force += interface_force;
+          interfaces->commit();
+        }
+      TimerOutput::Scope scope(timer, "loads");
+      assembler.assemble_load(loads, t, load);
+      reaction = force;
+      reaction -= load;
+      acceleration = reaction;
+      acceleration *= -1;
+      acceleration.scale(free_inverse_mass);
+      reaction.scale(support_mask);
+    };
+
+    double external_work = 0;
+    Vector displacement_step(owned, comm), momentum(owned, comm);
+    auto   ledger_row = [&]() {
+      momentum = velocity;
+      momentum.scale(free_mass);
+      const double kinetic = 0.5 * (momentum * velocity);
+      std::vector<std::pair<std::string, double>> columns
+        = {{"external_work", external_work},
+           {"kinetic_energy", kinetic},
+           {"strain_energy", strain_energy}};
+      const double interface_work = add_interface_columns(columns);
+      columns.emplace_back("balance_error",
+                           external_work - kinetic - strain_energy
+                             - interface_work);
+      return columns;
+    };
+
+    if (interfaces)
+      interfaces->set_time_step(dt);
+    double t = 0;
+    impose_prescribed(t, solution);
+    evaluate(t);
+    postprocess(0, t, reaction, ledger_row());
+    Vector old_solution(owned, comm);
+    for (unsigned int out = 1; out <= parameters.time.n_steps; ++out)
+      {
+        for (unsigned int k = 0; k < substeps; ++k)
+          {
+            TimerOutput::Scope scope(timer, "time steps");
+            previous_load     = load;
+            previous_reaction = reaction;
+            velocity.add(0.5 * dt, acceleration);
+            old_solution = solution;
+            solution.add(dt, velocity);
+            t = ((out - 1) * substeps + k + 1) * dt;
+            impose_prescribed(t, solution);
+            evaluate(t);
+            velocity.add(0.5 * dt, acceleration);
+            displacement_step = solution;
+            displacement_step -= old_solution;
+            previous_load += load;
+            previous_reaction += reaction;
+            external_work += 0.5
+                             * (previous_load * displacement_step
+                                + previous_reaction * displacement_step);
+            if (!std::isfinite(strain_energy))
+              throw CollectiveError(
+                "the explicit solution diverged at t=" + std::to_string(t)
+                + " s: reduce Time/Safety factor or Time/Time step");
+          }
+        postprocess(out, t, reaction, ledger_row());
+      }
+    timer.print_wall_time_statistics(comm);
+  }
+
+  template void
+  Simulator<2>::run_explicit();
+  template void
+  Simulator<3>::run_explicit();
+} // namespace amfrac
