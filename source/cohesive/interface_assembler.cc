@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <amfrac/base/mpi_max.h>
 #include <amfrac/cohesive/interface_assembler.h>
 #include <amfrac/parameters/expressions.h>
 #include <amfrac/parameters/input_error.h>
@@ -648,20 +649,7 @@ namespace amfrac
           worst = row / mass(dof);
           where = position[dof];
         }
-    // The rank with the largest bound reports its position.
-    const double       global = Utilities::MPI::max(worst, comm);
-    const unsigned int owner
-      = Utilities::MPI::min(worst == global ?
-                              Utilities::MPI::this_mpi_process(comm) :
-                              Utilities::MPI::n_mpi_processes(comm),
-                            comm);
-    std::vector<double> point(dim);
-    for (unsigned int d = 0; d < dim; ++d)
-      point[d] = where[d];
-    point = Utilities::MPI::broadcast(comm, point, owner);
-    for (unsigned int d = 0; d < dim; ++d)
-      where[d] = point[d];
-    return global;
+    return max_and_where(worst, where, comm);
   }
 
 

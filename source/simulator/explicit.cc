@@ -4,6 +4,7 @@
 // force comes from the stresses cell by cell and the interface force from
 // the current jump and history.
 #include <algorithm>
+#include <amfrac/base/mpi_max.h>
 #include <amfrac/parameters/input_error.h>
 #include <amfrac/simulator/simulator.h>
 #include <cmath>
@@ -64,20 +65,7 @@ namespace amfrac
               bulk = w2, bulk_where = cells[i].second->center();
           }
       }
-    const double global_bulk = Utilities::MPI::max(bulk, comm);
-    {
-      const unsigned int owner
-        = Utilities::MPI::min(bulk == global_bulk ?
-                                Utilities::MPI::this_mpi_process(comm) :
-                                Utilities::MPI::n_mpi_processes(comm),
-                              comm);
-      std::vector<double> p(dim);
-      for (unsigned int d = 0; d < dim; ++d)
-        p[d] = bulk_where[d];
-      p = Utilities::MPI::broadcast(comm, p, owner);
-      for (unsigned int d = 0; d < dim; ++d)
-        bulk_where[d] = p[d];
-    }
+    const double global_bulk = max_and_where(bulk, bulk_where, comm);
     // Interfaces: the penalty springs against the lumped masses. Both in
     // the mass inner product, so omega^2 of the sum is at most the sum.
     double     springs = 0;

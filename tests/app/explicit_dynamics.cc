@@ -3,9 +3,9 @@
 //   traction, against one-dimensional wave theory: the end displacement on
 //   the rising branch (t = L/2c, L/c) within 1 %, its extreme 2 p L / E1
 //   within 2 % (sampled every microsecond; the 3D bar's lateral inertia
-//   rounds the 1D kink) at 2 L / c within 3 %, back to rest at 4 L / c; energy balance (work = kinetic +
-//   strain) within 1e-3 of the work at every output time; a fixed time
-//   step above the estimated stable step is an input error;
+//   rounds the 1D kink) at 2 L / c within 3 %, back to rest at 4 L / c; energy
+//   balance (work = kinetic + strain) within 1e-3 of the work at every output
+//   time; a fixed time step above the estimated stable step is an input error;
 // - dcb: a 2D DCB opened at 20 m/s (cohesive interfaces in an explicit
 //   run): balance (work = kinetic + strain + interface work) within 1e-4
 //   of the work, and the energy dissipated lies between G_Ic times the
