@@ -348,28 +348,49 @@ namespace amfrac
 
 
 
+  namespace
+  {
+    /** The lumped mass of one element: the consistent mass integrated
+     * with Gauss-Lobatto on the nodes (@p lobatto reinitialized on it). */
+    template <int dim>
+    void
+    element_lumped_mass(const FEValues<dim>    &lobatto,
+                        const double            density,
+                        dealii::Vector<double> &m)
+    {
+      m = 0;
+      for (const unsigned int q : lobatto.quadrature_point_indices())
+        for (unsigned int i = 0; i < m.size(); ++i)
+          m(i) += density * lobatto.shape_value(i, q) * lobatto.JxW(q);
+    }
+
+    template <int dim>
+    FEValues<dim>
+    lobatto_values(const FiniteElement<dim> &fe)
+    {
+      return FEValues<dim>(fe,
+                           QGaussLobatto<dim>(fe.degree + 1),
+                           update_values | update_JxW_values);
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   ElasticAssembler<dim>::lumped_mass(Vector &mass) const
   {
-    const auto                          &fe = dofs.get_fe();
-    const unsigned int                   n  = fe.n_dofs_per_cell();
-    FEValues<dim>                        fe_values(fe,
-                            QGaussLobatto<dim>(fe.degree + 1),
-                            update_values | update_JxW_values);
-    dealii::Vector<double>               m(n);
-    std::vector<types::global_dof_index> indices(n);
+    const auto                          &fe        = dofs.get_fe();
+    FEValues<dim>                        fe_values = lobatto_values(fe);
+    dealii::Vector<double>               m(fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
     mass = 0;
     for (const auto &cell : dofs.copy_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
           dofs.get_dof_indices(cell, indices);
-          const double density = plies[cell->material_id()].density;
-          m                    = 0;
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            for (unsigned int i = 0; i < n; ++i)
-              m(i) += density * fe_values.shape_value(i, q) * fe_values.JxW(q);
+          element_lumped_mass(fe_values, plies[cell->material_id()].density, m);
           mass.add(indices, m);
         }
     mass.compress(VectorOperation::add);
@@ -388,21 +409,16 @@ namespace amfrac
     scratch.fe_values.reinit(cell);
     FullMatrix<double> K(n, n);
     cell_matrix(scratch, cell->material_id(), K);
-    FEValues<dim> lobatto(fe,
-                          QGaussLobatto<dim>(fe.degree + 1),
-                          update_values | update_JxW_values);
+    FEValues<dim> lobatto = lobatto_values(fe);
     lobatto.reinit(cell);
-    std::vector<double> m(n, 0.);
-    for (const unsigned int q : lobatto.quadrature_point_indices())
-      for (unsigned int i = 0; i < n; ++i)
-        m[i] += plies[cell->material_id()].density * lobatto.shape_value(i, q)
-                * lobatto.JxW(q);
+    dealii::Vector<double> m(n);
+    element_lumped_mass(lobatto, plies[cell->material_id()].density, m);
     // Largest eigenvalue of M^-1/2 K M^-1/2 (symmetric, positive
     // semi-definite): a dense eigenproblem of the element's size.
     LAPACKFullMatrix<double> A(n, n);
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = 0; j < n; ++j)
-        A(i, j) = K(i, j) / std::sqrt(m[i] * m[j]);
+        A(i, j) = K(i, j) / std::sqrt(m(i) * m(j));
     A.compute_eigenvalues();
     double largest = 0;
     for (unsigned int i = 0; i < n; ++i)

@@ -29,6 +29,17 @@ namespace amfrac
       const bool settled = interfaces.contact_changes(comm) == 0;
       return n >= 6 && residuals[n - 1] > 0.5 * residuals[n - 3] && settled;
     }
+
+    /** " |r|: r0 r1 ..." for the log. */
+    std::string
+    residual_list(const std::vector<double> &residuals)
+    {
+      std::ostringstream line;
+      line << ", |r|:";
+      for (const double r : residuals)
+        line << ' ' << std::setprecision(2) << r;
+      return line.str();
+    }
   } // namespace
 
 
@@ -601,13 +612,10 @@ namespace amfrac
             if (!report.converged || trial_t > end || trial_t < 0
                 || std::abs(trial_t - t) > 4 * nominal)
               {
-                std::ostringstream line;
-                line << "  t=" << trial_t << ": " << control
-                     << " control did not converge or left the path, |r|:";
-                for (const double r : report.residuals)
-                  line << ' ' << std::setprecision(2) << r;
-                pcout << line.str() << "; trying a displacement step"
-                      << std::endl;
+                pcout << "  t=" << trial_t << ": " << control
+                      << " control did not converge or left the path"
+                      << residual_list(report.residuals)
+                      << "; trying a displacement step" << std::endl;
                 trial_t = std::min(t + dt, end);
                 interfaces->set_time_step(trial_t - t);
                 report = solve_newton_step(trial_t, solver);
@@ -634,9 +642,8 @@ namespace amfrac
             if (by_dissipation)
               dtau *= 0.5;
             std::ostringstream line;
-            line << "  t=" << trial_t << ": Newton did not converge, |r|:";
-            for (const double r : report.residuals)
-              line << ' ' << std::setprecision(2) << r;
+            line << "  t=" << trial_t << ": Newton did not converge"
+                 << residual_list(report.residuals);
             pcout << line.str() << " (force scale " << newton->force_scale
                   << "); step cut to " << dt
                   << (by_dissipation ? " (and the " + control + " increment to "
@@ -670,9 +677,7 @@ namespace amfrac
           line << "  step " << step << " t=" << trial_t << ": " << its
                << " Newton iteration(s)"
                << (by_dissipation ? " (" + control + " control)" : "")
-               << ", |r|:";
-          for (const double r : report.residuals)
-            line << ' ' << std::setprecision(2) << r;
+               << residual_list(report.residuals);
           pcout << line.str() << std::endl;
         }
         const double force = load_force(newton->residual);
