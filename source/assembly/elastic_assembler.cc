@@ -1,4 +1,6 @@
 #include <amfrac/assembly/elastic_assembler.h>
+#include <amfrac/parameters/input_error.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/lapack_full_matrix.h>
@@ -84,25 +86,129 @@ namespace amfrac
 
   template <int dim>
   void
+  ElasticAssembler<dim>::prepare_patch(PatchLoad<dim> &patch) const
+  {
+    const auto &fe = dofs.get_fe();
+    // 16 x 2 points per direction: the patch edge cuts a face to within a
+    // 32nd of its size; the normalization below makes the total exact.
+    FEFaceValues<dim>      fv(fe,
+                         QIterated<dim - 1>(QGauss<1>(2), 16),
+                         update_values | update_quadrature_points
+                           | update_normal_vectors | update_JxW_values);
+    dealii::Vector<double> f(fe.n_dofs_per_cell());
+    double                 area = 0;
+    patch.unit_nodal_forces.clear();
+    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int face : cell->face_indices())
+          {
+            if (!cell->at_boundary(face)
+                || cell->face(face)->boundary_id() != patch.boundary_id)
+              continue;
+            // Faces far from the patch (measured in the face plane: the
+            // center's normal coordinate is ignored) are skipped.
+            const auto geometry         = cell->face(face);
+            Point<dim> in_plane         = geometry->center();
+            in_plane[patch.normal_axis] = patch.center[patch.normal_axis];
+            if (in_plane.distance(patch.center)
+                > patch.reach() + geometry->diameter())
+              continue;
+            fv.reinit(cell, face);
+            f             = 0;
+            double inside = 0;
+            for (const unsigned int q : fv.quadrature_point_indices())
+              {
+                if (!patch.inside(fv.quadrature_point(q)))
+                  continue;
+                inside += fv.JxW(q);
+                const Tensor<1, dim> direction = patch.direction.norm() > 0 ?
+                                                   patch.direction :
+                                                   -fv.normal_vector(q);
+                for (const unsigned int i : dofs.dofs_on_face(face))
+                  f(i) += fv.shape_value(i, q)
+                          * direction[fe.system_to_component_index(i).first]
+                          * fv.JxW(q);
+              }
+            if (inside > 0)
+              {
+                area += inside;
+                patch.unit_nodal_forces[{cell->active_cell_index(), face}] = f;
+              }
+          }
+    const MPI_Comm comm
+      = dofs.copy_handler().get_triangulation().get_communicator();
+    area = Utilities::MPI::sum(area, comm);
+    if (!(area > 0))
+      throw InputError("Boundary conditions/Patch load/Center",
+                       "the patch covers no part of its face");
+    for (auto &[key, forces] : patch.unit_nodal_forces)
+      forces /= area;
+  }
+
+
+
+  template <int dim>
+  typename ElasticAssembler<dim>::CellList
+  ElasticAssembler<dim>::loaded_cells(const Loads<dim> &loads) const
+  {
+    CellList cells;
+    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          bool loaded = loads.body_force != nullptr;
+          for (const unsigned int face : cell->face_indices())
+            {
+              if (!cell->at_boundary(face))
+                continue;
+              const auto id = cell->face(face)->boundary_id();
+              loaded        = loaded || loads.tractions.count(id) > 0
+                       || loads.pressures.count(id) > 0;
+              // A patch loads only the faces it covers.
+              for (const auto &patch : loads.patches)
+                loaded = loaded
+                         || patch.unit_nodal_forces.count(
+                              {cell->active_cell_index(), face})
+                              > 0;
+            }
+          if (loaded)
+            cells.push_back(cell);
+        }
+    return cells;
+  }
+
+
+
+  template <int dim>
+  void
   ElasticAssembler<dim>::assemble_load(const Loads<dim> &loads,
                                        const double      t,
                                        Vector           &f) const
   {
-    f = 0;
-    if (loads.empty())
-      return;
+    assemble_load(loads, t, loaded_cells(loads), f);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticAssembler<dim>::assemble_load(const Loads<dim> &loads,
+                                       const double      t,
+                                       const CellList   &cells,
+                                       Vector           &f) const
+  {
+    f                        = 0;
     const unsigned int     n = dofs.get_fe().n_dofs_per_cell();
     Scratch                scratch(dofs.get_fe(), quadrature_degree);
     dealii::Vector<double> cell_f(n);
     std::vector<types::global_dof_index> indices(n);
-    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
+    for (const auto &cell : cells)
+      {
+        if (loads.body_force)
           scratch.fe_values.reinit(cell);
-          dofs.get_dof_indices(cell, indices);
-          cell_load(scratch, cell, loads, t, cell_f);
-          f.add(indices, cell_f);
-        }
+        dofs.get_dof_indices(cell, indices);
+        cell_load(scratch, cell, loads, t, cell_f);
+        f.add(indices, cell_f);
+      }
     f.compress(VectorOperation::add);
   }
 
@@ -172,7 +278,18 @@ namespace amfrac
             || !loads.on_face(cell->face(face)->boundary_id()))
           continue;
         const auto id = cell->face(face)->boundary_id();
-        auto      &fv = scratch.face_values;
+        for (const auto &patch : loads.patches)
+          {
+            const auto found
+              = patch.unit_nodal_forces.find({cell->active_cell_index(), face});
+            if (found == patch.unit_nodal_forces.end())
+              continue;
+            patch.force->set_time(t);
+            f.add(patch.force->value(Point<dim>()), found->second);
+          }
+        if (!loads.tractions.count(id) && !loads.pressures.count(id))
+          continue;
+        auto &fv = scratch.face_values;
         fv.reinit(cell, face);
         for (const unsigned int q : fv.quadrature_point_indices())
           {
@@ -301,53 +418,6 @@ namespace amfrac
     return energies;
   }
 
-  template <int dim>
-  double
-  ElasticAssembler<dim>::internal_force(const Vector &solution,
-                                        Vector       &force) const
-  {
-    const unsigned int     n = dofs.get_fe().n_dofs_per_cell();
-    Scratch                scratch(dofs.get_fe(), quadrature_degree);
-    dealii::Vector<double> f(n);
-    std::vector<types::global_dof_index> indices(n);
-    std::vector<double>                  u(n);
-    double                               energy = 0;
-    force                                       = 0;
-    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          auto &fe_values = scratch.fe_values;
-          fe_values.reinit(cell);
-          dofs.get_dof_indices(cell, indices);
-          for (unsigned int i = 0; i < n; ++i)
-            u[i] = solution(indices[i]);
-          const auto &C = plies[cell->material_id()].stiffness;
-          f             = 0;
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            {
-              SymmetricTensor<2, dim> strain;
-              for (unsigned int i = 0; i < n; ++i)
-                strain
-                  += u[i]
-                     * fe_values[scratch.displacement].symmetric_gradient(i, q);
-              const SymmetricTensor<2, dim> stress = C * strain;
-              energy += 0.5 * (stress * strain) * fe_values.JxW(q);
-              for (unsigned int i = 0; i < n; ++i)
-                f(i)
-                  += (fe_values[scratch.displacement].symmetric_gradient(i, q)
-                      * stress)
-                     * fe_values.JxW(q);
-            }
-          force.add(indices, f);
-        }
-    force.compress(VectorOperation::add);
-    const MPI_Comm comm
-      = dofs.copy_handler().get_triangulation().get_communicator();
-    return Utilities::MPI::sum(energy, comm);
-  }
-
-
-
   namespace
   {
     /** The lumped mass of one element: the consistent mass integrated
@@ -399,16 +469,28 @@ namespace amfrac
 
 
   template <int dim>
+  void
+  ElasticAssembler<dim>::element_stiffness(
+    const typename TiedCopyDoFs<dim>::CellIterator &cell,
+    FullMatrix<double>                             &K) const
+  {
+    Scratch scratch(dofs.get_fe(), quadrature_degree);
+    scratch.fe_values.reinit(cell);
+    K.reinit(dofs.get_fe().n_dofs_per_cell(), dofs.get_fe().n_dofs_per_cell());
+    cell_matrix(scratch, cell->material_id(), K);
+  }
+
+
+
+  template <int dim>
   double
   ElasticAssembler<dim>::max_frequency_squared(
     const typename TiedCopyDoFs<dim>::CellIterator &cell) const
   {
     const auto        &fe = dofs.get_fe();
     const unsigned int n  = fe.n_dofs_per_cell();
-    Scratch            scratch(fe, quadrature_degree);
-    scratch.fe_values.reinit(cell);
     FullMatrix<double> K(n, n);
-    cell_matrix(scratch, cell->material_id(), K);
+    element_stiffness(cell, K);
     FEValues<dim> lobatto = lobatto_values(fe);
     lobatto.reinit(cell);
     dealii::Vector<double> m(n);

@@ -386,7 +386,120 @@ namespace amfrac
           prm.leave_subsection();
         }
       declare_lever(prm);
+      declare_patch(prm);
       prm.leave_subsection();
+    }
+
+
+
+    void
+    BoundaryConditions::declare_patch(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Patch load");
+      prm.declare_entry("Face",
+                        "none",
+                        Patterns::Selection("none|x-|x+|y-|y+|z-|z+"),
+                        "Face of the laminate box that carries a patch "
+                        "load: a total force spread uniformly over a "
+                        "circle or rectangle on it (an impact pulse, an "
+                        "indenter). none: no patch load.");
+      prm.declare_entry("Shape",
+                        "circle",
+                        Patterns::Selection("circle|rectangle"),
+                        "Shape of the patch.");
+      prm.declare_entry("Center",
+                        "0, 0, 0",
+                        Patterns::List(Patterns::Double(), 2, 3),
+                        "Center of the patch [mm], x, y (, z); the "
+                        "coordinate along the face normal is ignored.");
+      prm.declare_entry("Radius",
+                        "1",
+                        Patterns::Double(0),
+                        "Radius of a circular patch [mm] (in 2D the half "
+                        "length of the loaded segment).");
+      prm.declare_entry("Size",
+                        "1, 1",
+                        Patterns::List(Patterns::Double(0), 1, 2),
+                        "Side lengths of a rectangular patch [mm] along the "
+                        "face's in-plane axes in x, y, z order (one length "
+                        "in 2D).");
+      prm.declare_entry("Force",
+                        "0",
+                        Patterns::Anything(),
+                        "Total force [N; N/mm in 2D] as an expression of t, "
+                        "e.g. the triangular pulse 5000*max(0, 1 - abs(t - "
+                        "2.5e-6)/2.5e-6). It is spread uniformly over the "
+                        "patch area, whatever the mesh.");
+      prm.declare_entry("Direction",
+                        "normal",
+                        Patterns::Anything(),
+                        "'normal' (the inward normal of the face, i.e. "
+                        "pressing on it) or a vector x, y (, z).");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    BoundaryConditions::parse_patch(ParameterHandler  &prm,
+                                    const unsigned int dim)
+    {
+      const std::string path = "Boundary conditions/Patch load/";
+      prm.enter_subsection("Patch load");
+      const std::string face = prm.get("Face");
+      patch                  = PatchLoad();
+      if (face != "none")
+        {
+          patch.face   = face;
+          patch.circle = prm.get("Shape") == "circle";
+          patch.center = Utilities::string_to_double(
+            Utilities::split_string_list(prm.get("Center")));
+          patch.radius = prm.get_double("Radius");
+          patch.size   = Utilities::string_to_double(
+            Utilities::split_string_list(prm.get("Size")));
+          patch.force                 = prm.get("Force");
+          const std::string direction = Utilities::trim(prm.get("Direction"));
+          if (direction != "normal")
+            {
+              try
+                {
+                  patch.direction = Utilities::string_to_double(
+                    Utilities::split_string_list(direction));
+                }
+              catch (...)
+                {
+                  patch.direction.clear();
+                }
+              double norm = 0;
+              for (const double c : patch.direction)
+                norm += c * c;
+              require(patch.direction.size() == dim && norm > 0,
+                      path + "Direction",
+                      "'" + direction
+                        + "' is neither 'normal' nor a "
+                          "nonzero vector of "
+                        + std::to_string(dim) + " components");
+            }
+        }
+      prm.leave_subsection();
+      if (patch.face.empty())
+        return;
+      require(patch.face[0] - 'x' < int(dim),
+              path + "Face",
+              "face '" + patch.face + "' does not exist in "
+                + std::to_string(dim) + "D");
+      require(patch.center.size() == dim,
+              path + "Center",
+              "needs " + std::to_string(dim) + " coordinates");
+      if (patch.circle)
+        require(patch.radius > 0, path + "Radius", "must be positive");
+      else
+        require(patch.size.size() == dim - 1
+                  && *std::min_element(patch.size.begin(), patch.size.end())
+                       > 0,
+                path + "Size",
+                "needs " + std::to_string(dim - 1)
+                  + " positive side length(s)");
     }
 
 
@@ -527,6 +640,7 @@ namespace amfrac
           faces.push_back(face);
         }
       parse_lever(prm, dim);
+      parse_patch(prm, dim);
       prm.leave_subsection();
     }
 
@@ -632,7 +746,21 @@ namespace amfrac
                         Patterns::Double(0),
                         "Explicit: a fixed time step in s; 0 takes Safety "
                         "factor times the estimated stable step. A fixed "
-                        "step above the estimate is an input error.");
+                        "step above the estimate is an input error unless "
+                        "Allow unstable time step is set.");
+      prm.declare_entry("Allow unstable time step",
+                        "false",
+                        Patterns::Bool(),
+                        "Explicit: accept a fixed Time step above the "
+                        "estimated stable step (for stability studies; the "
+                        "run stops when its energy blows up).");
+      prm.declare_entry("Initial velocity",
+                        "0",
+                        Patterns::Anything(),
+                        "Explicit: initial velocity [mm/s] as expressions "
+                        "in x, y, (z) separated by ';' (one for all "
+                        "components or one per component). Supported "
+                        "nodes move as prescribed instead.");
       prm.leave_subsection();
     }
 
@@ -647,6 +775,8 @@ namespace amfrac
       explicit_dynamics = prm.get("Time integration") == "explicit";
       safety_factor     = prm.get_double("Safety factor");
       time_step         = prm.get_double("Time step");
+      allow_unstable    = prm.get_bool("Allow unstable time step");
+      initial_velocity  = split_expressions(prm.get("Initial velocity"));
       prm.leave_subsection();
       require(end_time > 0, "Time/End time", "must be positive");
       require(safety_factor > 0, "Time/Safety factor", "must be positive");
@@ -679,6 +809,14 @@ namespace amfrac
                         Patterns::Integer(1),
                         "Write fields every this many steps (and at the "
                         "last).");
+      prm.declare_entry("Damage maps",
+                        "true",
+                        Patterns::Bool(),
+                        "3D with cohesive interfaces and a field format: "
+                        "with every field output, a PNG top view of each "
+                        "interface, damage-interface-<k>-<step>.png "
+                        "(white intact, yellow to red softening, black "
+                        "debonded, blue debonded and in contact).");
       prm.declare_entry("Point values",
                         "",
                         Patterns::Anything(),
@@ -699,6 +837,7 @@ namespace amfrac
       write_vtu                = format == "vtu" || format == "vtu+xdmf";
       write_xdmf               = format == "xdmf" || format == "vtu+xdmf";
       every_n_steps            = prm.get_integer("Write every");
+      damage_maps              = prm.get_bool("Damage maps");
       const std::string text   = prm.get("Point values");
       prm.leave_subsection();
 

@@ -124,6 +124,7 @@ namespace amfrac
     const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
 
     DataOut<dim> data_out;
+    data_out.set_flags(fast_vtk_flags());
     data_out.attach_dof_handler(dof_handler);
     data_out.add_data_vector(
       copy_values,

@@ -23,7 +23,9 @@ namespace amfrac
                                         const MPI_Comm            comm)
     : parameters(parameters)
     , comm(comm)
-  {}
+  {
+    this->set_flags(fast_vtk_flags());
+  }
 
 
 

@@ -4,7 +4,9 @@
 // force comes from the stresses cell by cell and the interface force from
 // the current jump and history.
 #include <algorithm>
+#include <amfrac/assembly/bulk_force.h>
 #include <amfrac/base/mpi_max.h>
+#include <amfrac/parameters/expressions.h>
 #include <amfrac/parameters/input_error.h>
 #include <amfrac/simulator/simulator.h>
 #include <cmath>
@@ -105,6 +107,29 @@ namespace amfrac
 
   template <int dim>
   void
+  Simulator<dim>::set_initial_velocity(const Vector &free_inverse_mass,
+                                       Vector       &velocity) const
+  {
+    const auto &expressions = parameters.time.initial_velocity;
+    velocity                = 0;
+    if (expressions.size() == 1 && expressions[0] == "0")
+      return;
+    const auto v0
+      = make_expression_function<dim>(expressions,
+                                      dim,
+                                      parameters.boundary_conditions.constants,
+                                      "Time/Initial velocity");
+    for (const auto i : dof_layer.locally_owned_dofs())
+      if (free_inverse_mass(i) != 0)
+        velocity(i)
+          = v0->value(dof_layer.support_point(i), dof_layer.component(i));
+    velocity.compress(VectorOperation::insert);
+  }
+
+
+
+  template <int dim>
+  void
   Simulator<dim>::run_explicit()
   {
     check_explicit_input();
@@ -130,15 +155,19 @@ namespace amfrac
       TimerOutput::Scope scope(timer, "stable time step");
       stable = stable_time_step(relevant_mass);
     }
-    double dt = parameters.time.safety_factor * stable;
+    estimated_stable_step = stable;
+    double dt             = parameters.time.safety_factor * stable;
     if (parameters.time.time_step > 0)
       {
-        if (parameters.time.time_step > stable)
+        if (parameters.time.time_step > stable
+            && !parameters.time.allow_unstable)
           throw InputError("Time/Time step",
                            "the fixed step "
                              + std::to_string(parameters.time.time_step)
                              + " s exceeds the estimated stable step "
-                             + std::to_string(stable) + " s");
+                             + std::to_string(stable)
+                             + " s (set Time/Allow unstable time step = "
+                               "true to run it anyway)");
         dt = parameters.time.time_step;
       }
     // Whole steps per output interval, so that output lands on its times.
@@ -167,20 +196,28 @@ namespace amfrac
         free_mass(i) = 0;
     free_mass.compress(VectorOperation::insert);
 
+    std::unique_ptr<BulkForceOperator<dim>> bulk;
+    {
+      TimerOutput::Scope scope(timer, "element matrices");
+      bulk = std::make_unique<BulkForceOperator<dim>>(dof_layer, assembler);
+    }
+    pcout << "  bulk force: " << bulk->summary() << std::endl;
+    const auto loaded_cells = assembler.loaded_cells(loads);
+
     AffineConstraints<double> none;
     none.close();
     double strain_energy = 0;
     // Forces, reaction and acceleration of the state in `solution` at t.
     auto evaluate = [&](const double t) {
-      relevant_solution = solution;
       {
         TimerOutput::Scope scope(timer, "bulk force");
-        strain_energy = assembler.internal_force(relevant_solution, force);
+        strain_energy = bulk->apply(solution, force);
       }
       if (interfaces)
         {
           TimerOutput::Scope scope(timer, "interfaces");
-          interface_force = 0;
+          relevant_solution = solution;
+          interface_force   = 0;
           interfaces->assemble(relevant_solution,
                                interface_force,
                                none,
@@ -190,7 +227,7 @@ namespace amfrac
           interfaces->commit();
         }
       TimerOutput::Scope scope(timer, "loads");
-      assembler.assemble_load(loads, t, load);
+      assembler.assemble_load(loads, t, loaded_cells, load);
       reaction = force;
       reaction -= load;
       acceleration = reaction;
@@ -199,10 +236,13 @@ namespace amfrac
       reaction.scale(support_mask);
     };
 
-    double external_work = 0;
+    // The energy the run starts with (initial velocity, prescribed
+    // displacement at t = 0) enters the balance beside the external work.
+    double external_work = 0, initial_energy = 0;
     Vector displacement_step(owned, comm), momentum(owned, comm);
     auto   ledger_row = [&]() {
-      momentum = velocity;
+      relevant_solution = solution;
+      momentum          = velocity;
       momentum.scale(free_mass);
       const double kinetic = 0.5 * (momentum * velocity);
       std::vector<std::pair<std::string, double>> columns
@@ -211,8 +251,8 @@ namespace amfrac
            {"strain_energy", strain_energy}};
       const double interface_work = add_interface_columns(columns);
       columns.emplace_back("balance_error",
-                           external_work - kinetic - strain_energy
-                             - interface_work);
+                           initial_energy + external_work - kinetic
+                             - strain_energy - interface_work);
       return columns;
     };
 
@@ -220,7 +260,11 @@ namespace amfrac
       interfaces->set_time_step(dt);
     double t = 0;
     impose_prescribed(t, solution);
+    set_initial_velocity(free_inverse_mass, velocity);
     evaluate(t);
+    momentum = velocity;
+    momentum.scale(free_mass);
+    initial_energy = strain_energy + 0.5 * (momentum * velocity);
     postprocess(0, t, reaction, ledger_row());
     Vector old_solution(owned, comm);
     for (unsigned int out = 1; out <= parameters.time.n_steps; ++out)
@@ -244,10 +288,17 @@ namespace amfrac
             external_work += 0.5
                              * (previous_load * displacement_step
                                 + previous_reaction * displacement_step);
-            if (!std::isfinite(strain_energy))
+            if (!std::isfinite(strain_energy)
+                || strain_energy
+                     > 10 * (std::abs(external_work) + initial_energy + 1e-300))
               throw CollectiveError(
                 "the explicit solution diverged at t=" + std::to_string(t)
-                + " s: reduce Time/Safety factor or Time/Time step");
+                + " s (strain energy " + std::to_string(strain_energy)
+                + " N mm against " + std::to_string(external_work)
+                + " N mm of external work and " + std::to_string(initial_energy)
+                + " N mm at the start): reduce Time/Safety factor or "
+                  "Time/Time step; the output up to the last interval is "
+                  "kept");
           }
         postprocess(out, t, reaction, ledger_row());
       }

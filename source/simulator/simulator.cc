@@ -1,5 +1,6 @@
 #include <amfrac/parameters/expressions.h>
 #include <amfrac/parameters/input_error.h>
+#include <amfrac/postprocess/damage_map.h>
 #include <amfrac/simulator/simulator.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -76,6 +77,37 @@ namespace amfrac
 
 
   template <int dim>
+  PatchLoad<dim>
+  Simulator<dim>::build_patch_load() const
+  {
+    const auto    &bc = parameters.boundary_conditions;
+    const auto    &in = bc.patch;
+    PatchLoad<dim> patch;
+    const auto    &names = parameters::BoundaryConditions::face_names;
+    patch.boundary_id
+      = std::find(names.begin(), names.end(), in.face) - names.begin();
+    patch.normal_axis = in.face[0] - 'x';
+    for (unsigned int d = 0; d < dim; ++d)
+      patch.center[d] = in.center[d];
+    patch.circle = in.circle;
+    patch.radius = in.radius;
+    for (unsigned int k = 0; k < in.size.size() && k < 2; ++k)
+      patch.half_size[k] = in.size[k] / 2;
+    if (!in.direction.empty())
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          patch.direction[d] = in.direction[d];
+        patch.direction /= patch.direction.norm();
+      }
+    patch.force = make_expression_function<dim>(
+      {in.force}, 1, bc.constants, "Boundary conditions/Patch load/Force");
+    assembler.prepare_patch(patch);
+    return patch;
+  }
+
+
+
+  template <int dim>
   void
   Simulator<dim>::build_loads_and_supports()
   {
@@ -86,6 +118,9 @@ namespace amfrac
     if (any_body_force)
       loads.body_force = make_expression_function<dim>(
         bc.body_force, dim, constants, "Boundary conditions/Body force");
+
+    if (!bc.patch.face.empty())
+      loads.patches.push_back(build_patch_load());
 
     for (unsigned int id = 0; id < 2 * dim; ++id)
       {
@@ -478,10 +513,13 @@ namespace amfrac
       return;
     dof_layer.expand(relevant_solution, copy_values);
     field_output->write(step, t, copy_values);
+    if (!interfaces)
+      return;
+    const auto points = interfaces->output_points(relevant_solution);
     if (interface_output)
-      interface_output->write(step,
-                              t,
-                              interfaces->output_points(relevant_solution));
+      interface_output->write(step, t, points);
+    if (parameters.output.damage_maps)
+      write_damage_maps(parameters.output.directory, step, points, comm);
   }
 
 

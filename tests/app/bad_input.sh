@@ -79,6 +79,37 @@ subsection Time
   set Time integration = explicit
   set Time step = 1
 end"
+expect patch_outside_face "Boundary conditions/Patch load/Center" "$base
+subsection Boundary conditions
+  subsection Patch load
+    set Face   = z+
+    set Center = 50, 50, 0
+    set Force  = 100
+  end
+end"
+expect patch_bad_direction "Boundary conditions/Patch load/Direction" "$base
+subsection Boundary conditions
+  subsection Patch load
+    set Face      = z+
+    set Direction = down
+  end
+end"
+expect patch_rectangle_size "Boundary conditions/Patch load/Size" "$base
+subsection Boundary conditions
+  subsection Patch load
+    set Face  = z+
+    set Shape = rectangle
+    set Size  = 1
+  end
+end"
+expect initial_velocity_syntax "Time/Initial velocity" "$base
+subsection Materials
+  set Density = 1.6e-9
+end
+subsection Time
+  set Time integration = explicit
+  set Initial velocity = 0; 0; sin(
+end"
 expect unknown_material "unknown material 'glass'" "$(with '\[0/90\]s' '[0@glass/90]')"
 expect face_not_in_2d "Boundary conditions/z-/Type" "$(with 'set Dimension = 3' 'set Dimension = 2')
 subsection Boundary conditions

@@ -50,9 +50,31 @@ namespace amfrac
                  const AffineConstraints<double> &constraints,
                  Vector                          &rhs) const;
 
+    /** Compute @p patch.unit_nodal_forces: a unit total force spread
+     * uniformly over the patch, integrated with a fine rule on each face
+     * it touches, so that the total is exact whatever the mesh. Throws an
+     * InputError if the patch covers no part of its face. */
+    void
+    prepare_patch(PatchLoad<dim> &patch) const;
+
+    using CellList = std::vector<typename TiedCopyDoFs<dim>::CellIterator>;
+
+    /** The locally owned cells that carry a load: all of them with a body
+     * force, else those on loaded faces. */
+    CellList
+    loaded_cells(const Loads<dim> &loads) const;
+
     /** The load vector f(t) without constraints. */
     void
     assemble_load(const Loads<dim> &loads, const double t, Vector &f) const;
+
+    /** The same, visiting only @p cells (from loaded_cells(): explicit
+     * runs call this every step). */
+    void
+    assemble_load(const Loads<dim> &loads,
+                  const double      t,
+                  const CellList   &cells,
+                  Vector           &f) const;
 
     struct Energies
     {
@@ -68,10 +90,10 @@ namespace amfrac
                      const Vector     &relevant_solution,
                      Vector           &residual) const;
 
-    /** Explicit dynamics: @p force = K u from the stresses, cell by cell,
-     * without a matrix (compressed); returns the strain energy. */
-    double
-    internal_force(const Vector &relevant_solution, Vector &force) const;
+    /** The stiffness matrix of one element (no constraints). */
+    void
+    element_stiffness(const typename TiedCopyDoFs<dim>::CellIterator &cell,
+                      FullMatrix<double>                             &K) const;
 
     /** The lumped mass of every reduced dof: the consistent mass
      * integrated with the Gauss-Lobatto rule on the element's nodes,

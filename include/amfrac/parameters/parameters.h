@@ -84,6 +84,23 @@ namespace amfrac
       std::string              where;
     };
 
+    /** `subsection Boundary conditions/Patch load`: a total force (a
+     * function of t) spread uniformly over a circle or rectangle on one
+     * face of the laminate box, e.g. an impact pulse. */
+    struct PatchLoad
+    {
+      /** Boundary face name; empty: no patch load. */
+      std::string         face;
+      bool                circle = true;
+      std::vector<double> center;
+      double              radius = 0;
+      /** Side lengths along the face's in-plane axes (x, y, z order). */
+      std::vector<double> size;
+      std::string         force;
+      /** Unit direction; empty: the inward normal of the face. */
+      std::vector<double> direction;
+    };
+
     /** `subsection Boundary conditions/Lever`: the rigid, weightless
      * loading lever of a mixed-mode bending test (see Lever<dim>). */
     struct Lever
@@ -112,6 +129,7 @@ namespace amfrac
     {
       std::vector<BoundaryFace> faces;
       Lever                     lever;
+      PatchLoad                 patch;
       std::vector<std::string>  body_force;
       std::string               constants;
 
@@ -127,6 +145,10 @@ namespace amfrac
       declare_lever(ParameterHandler &prm);
       void
       parse_lever(ParameterHandler &prm, const unsigned int dim);
+      static void
+      declare_patch(ParameterHandler &prm);
+      void
+      parse_patch(ParameterHandler &prm, const unsigned int dim);
     };
 
     /** `subsection Linear solver`. */
@@ -162,6 +184,11 @@ namespace amfrac
       double safety_factor;
       /** Explicit: a fixed time step (0: the estimated stable one). */
       double time_step;
+      /** Explicit: accept a fixed step above the estimate (stability
+       * studies). */
+      bool allow_unstable;
+      /** Explicit: initial velocity expressions in x, y, (z). */
+      std::vector<std::string> initial_velocity;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -172,11 +199,13 @@ namespace amfrac
     /** `subsection Output`. */
     struct Output
     {
-      std::string              directory;
-      std::string              base_name;
-      bool                     write_vtu;
-      bool                     write_xdmf;
-      unsigned int             every_n_steps;
+      std::string  directory;
+      std::string  base_name;
+      bool         write_vtu;
+      bool         write_xdmf;
+      unsigned int every_n_steps;
+      /** PNG top views of the interface damage with every field output. */
+      bool                     damage_maps;
       std::vector<Point<3>>    points;
       std::vector<std::string> point_names;
 

@@ -10,6 +10,17 @@
 
 namespace amfrac
 {
+  /** VTU flags of all amfrac output: zlib's fastest level (the default,
+   * best compression, took 5x longer on the impact scene's fields, for
+   * files 3 % smaller). */
+  inline dealii::DataOutBase::VtkFlags
+  fast_vtk_flags()
+  {
+    dealii::DataOutBase::VtkFlags flags;
+    flags.compression_level = dealii::DataOutBase::VtkFlags::best_speed;
+    return flags;
+  }
+
   /**
    * One step of a VTU time series: every rank writes its piece
    * `<stem>.<rank>.vtu` of @p out into @p directory, then rank 0 writes the

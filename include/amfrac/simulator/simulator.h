@@ -83,6 +83,13 @@ namespace amfrac
       return *summary;
     }
 
+    /** Explicit runs: the estimated stable time step (0 before run()). */
+    double
+    estimated_stable_time_step() const
+    {
+      return estimated_stable_step;
+    }
+
     /** The cohesive interfaces (nullptr if the scene has none). */
     const CohesiveInterfaces<dim> *
     cohesive_interfaces() const
@@ -115,6 +122,7 @@ namespace amfrac
     TiedCopyDoFs<dim>                        dof_layer;
     ElasticAssembler<dim>                    assembler;
     Loads<dim>                               loads;
+    double                                   estimated_stable_step = 0;
     std::vector<PrescribedDisplacement<dim>> prescribed;
     Lever<dim>                               lever;
     std::unique_ptr<PointProbe<dim>>         probe;
@@ -179,6 +187,11 @@ namespace amfrac
 
     void
     build_loads_and_supports();
+    PatchLoad<dim>
+    build_patch_load() const;
+    void
+    set_initial_velocity(const Vector &free_inverse_mass,
+                         Vector       &velocity) const;
     void
     collect_supports();
     void

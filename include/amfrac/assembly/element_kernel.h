@@ -1,0 +1,66 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace amfrac
+{
+  /**
+   * f += K_e u_e over a set of elements whose stiffness matrices come from
+   * a small table: elements of the same ply and the same shape (a
+   * translated copy) share one matrix, which on the structured laminate
+   * meshes leaves a handful of matrices for any number of elements. Plain
+   * C++ without deal.II, so that this one translation unit can be compiled
+   * with -O3 -march=native (Debian's deal.II is built without SIMD) and
+   * the small dense products vectorize.
+   */
+  class ElementMatrixKernel
+  {
+  public:
+    explicit ElementMatrixKernel(const unsigned int dofs_per_element);
+
+    /** Add a symmetric element matrix (row major, n x n); returns its
+     * index. */
+    unsigned int
+    add_matrix(const std::vector<double> &matrix);
+
+    /** Add an element with matrix @p matrix and the local indices of its
+     * dofs in the arrays apply() works on. */
+    void
+    add_element(const unsigned int matrix, const unsigned int *local_dofs);
+
+    /** f[i] += sum over elements of (K_e u_e)[i] (f is not zeroed);
+     * returns the elements' strain energy 1/2 u_e . K_e u_e. */
+    double
+    apply(const double *u, double *f) const;
+
+    std::size_t
+    n_elements() const
+    {
+      return element_matrix.size();
+    }
+
+    std::size_t
+    n_matrices() const
+    {
+      return matrices.size() / (n * n);
+    }
+
+    std::size_t
+    memory_consumption() const;
+
+  private:
+    unsigned int               n;
+    std::vector<double>        matrices;
+    std::vector<std::uint32_t> element_matrix;
+    std::vector<std::uint32_t> element_dofs;
+
+    template <unsigned int N>
+    double
+    apply_fixed(const double *u, double *f) const;
+
+    double
+    apply_any(const double *u, double *f) const;
+  };
+} // namespace amfrac

@@ -1,0 +1,120 @@
+#include <amfrac/assembly/element_kernel.h>
+#include <stdexcept>
+
+namespace amfrac
+{
+  ElementMatrixKernel::ElementMatrixKernel(const unsigned int dofs_per_element)
+    : n(dofs_per_element)
+  {}
+
+
+
+  unsigned int
+  ElementMatrixKernel::add_matrix(const std::vector<double> &matrix)
+  {
+    if (matrix.size() != std::size_t(n) * n)
+      throw std::logic_error("ElementMatrixKernel: matrix of wrong size");
+    const unsigned int index = n_matrices();
+    matrices.insert(matrices.end(), matrix.begin(), matrix.end());
+    return index;
+  }
+
+
+
+  void
+  ElementMatrixKernel::add_element(const unsigned int  matrix,
+                                   const unsigned int *local_dofs)
+  {
+    element_matrix.push_back(matrix);
+    element_dofs.insert(element_dofs.end(), local_dofs, local_dofs + n);
+  }
+
+
+
+  // The product is written column by column (K is symmetric, so columns
+  // are rows): f_e += K(:, j) u_j has no horizontal reduction and
+  // vectorizes over i with a compile-time length.
+  template <unsigned int N>
+  double
+  ElementMatrixKernel::apply_fixed(const double *u, double *f) const
+  {
+    double              energy = 0;
+    const std::size_t   n_el   = element_matrix.size();
+    const double *const K0     = matrices.data();
+    for (std::size_t e = 0; e < n_el; ++e)
+      {
+        const std::uint32_t *dofs = element_dofs.data() + e * N;
+        const double        *K    = K0 + std::size_t(element_matrix[e]) * N * N;
+        double               ue[N], fe[N] = {};
+        for (unsigned int j = 0; j < N; ++j)
+          ue[j] = u[dofs[j]];
+        for (unsigned int j = 0; j < N; ++j)
+          for (unsigned int i = 0; i < N; ++i)
+            fe[i] += K[j * N + i] * ue[j];
+        double work = 0;
+        for (unsigned int i = 0; i < N; ++i)
+          {
+            work += ue[i] * fe[i];
+            f[dofs[i]] += fe[i];
+          }
+        energy += 0.5 * work;
+      }
+    return energy;
+  }
+
+
+
+  double
+  ElementMatrixKernel::apply_any(const double *u, double *f) const
+  {
+    double              energy = 0;
+    std::vector<double> ue(n), fe(n);
+    for (std::size_t e = 0; e < element_matrix.size(); ++e)
+      {
+        const std::uint32_t *dofs = element_dofs.data() + e * n;
+        const double        *K
+          = matrices.data() + std::size_t(element_matrix[e]) * n * n;
+        for (unsigned int j = 0; j < n; ++j)
+          ue[j] = u[dofs[j]], fe[j] = 0;
+        for (unsigned int j = 0; j < n; ++j)
+          for (unsigned int i = 0; i < n; ++i)
+            fe[i] += K[j * n + i] * ue[j];
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            energy += 0.5 * ue[i] * fe[i];
+            f[dofs[i]] += fe[i];
+          }
+      }
+    return energy;
+  }
+
+
+
+  double
+  ElementMatrixKernel::apply(const double *u, double *f) const
+  {
+    switch (n)
+      {
+        case 8: // Q1 quadrilateral
+          return apply_fixed<8>(u, f);
+        case 18: // Q2 quadrilateral
+          return apply_fixed<18>(u, f);
+        case 24: // Q1 hexahedron
+          return apply_fixed<24>(u, f);
+        case 81: // Q2 hexahedron
+          return apply_fixed<81>(u, f);
+        default:
+          return apply_any(u, f);
+      }
+  }
+
+
+
+  std::size_t
+  ElementMatrixKernel::memory_consumption() const
+  {
+    return matrices.capacity() * sizeof(double)
+           + (element_matrix.capacity() + element_dofs.capacity())
+               * sizeof(std::uint32_t);
+  }
+} // namespace amfrac
