@@ -9,6 +9,7 @@
 #include <amfrac/parameters/expressions.h>
 #include <amfrac/parameters/input_error.h>
 #include <amfrac/simulator/simulator.h>
+#include <chrono>
 #include <cmath>
 #include <deal.II/base/mpi.h>
 
@@ -240,11 +241,14 @@ namespace amfrac
     // displacement at t = 0) enters the balance beside the external work.
     double external_work = 0, initial_energy = 0;
     Vector displacement_step(owned, comm), momentum(owned, comm);
-    auto   ledger_row = [&]() {
-      relevant_solution = solution;
-      momentum          = velocity;
+    auto   kinetic_energy = [&]() {
+      momentum = velocity;
       momentum.scale(free_mass);
-      const double kinetic = 0.5 * (momentum * velocity);
+      return 0.5 * (momentum * velocity);
+    };
+    auto ledger_row = [&]() {
+      relevant_solution                                   = solution;
+      const double                                kinetic = kinetic_energy();
       std::vector<std::pair<std::string, double>> columns
         = {{"external_work", external_work},
            {"kinetic_energy", kinetic},
@@ -262,10 +266,25 @@ namespace amfrac
     impose_prescribed(t, solution);
     set_initial_velocity(free_inverse_mass, velocity);
     evaluate(t);
-    momentum = velocity;
-    momentum.scale(free_mass);
-    initial_energy = strain_energy + 0.5 * (momentum * velocity);
+    initial_energy = strain_energy + kinetic_energy();
     postprocess(0, t, reaction, ledger_row());
+    // A progress line at most every 10 s of wall time, and at the end.
+    using Clock                      = std::chrono::steady_clock;
+    const Clock::time_point started  = Clock::now();
+    Clock::time_point       reported = started;
+    const unsigned int      n_out    = parameters.time.n_steps;
+    auto report_progress = [&](const unsigned int out, const double t) {
+      const Clock::time_point now = Clock::now();
+      if (std::chrono::duration<double>(now - reported).count() < 10
+          && out < n_out)
+        return;
+      reported = now;
+      const double rate
+        = out * substeps / std::chrono::duration<double>(now - started).count();
+      pcout << "  t = " << t << " s (" << 100. * out / n_out << " %), "
+            << out * substeps << " steps, " << rate << " steps/s, about "
+            << (n_out - out) * substeps / rate << " s to go" << std::endl;
+    };
     Vector old_solution(owned, comm);
     for (unsigned int out = 1; out <= parameters.time.n_steps; ++out)
       {
@@ -288,6 +307,8 @@ namespace amfrac
             external_work += 0.5
                              * (previous_load * displacement_step
                                 + previous_reaction * displacement_step);
+            // A step above the critical one shows as strain energy
+            // growing beyond all the energy the run was given.
             if (!std::isfinite(strain_energy)
                 || strain_energy
                      > 10 * (std::abs(external_work) + initial_energy + 1e-300))
@@ -301,6 +322,7 @@ namespace amfrac
                   "kept");
           }
         postprocess(out, t, reaction, ledger_row());
+        report_progress(out, t);
       }
     timer.print_wall_time_statistics(comm);
   }

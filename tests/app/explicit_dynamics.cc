@@ -3,7 +3,9 @@
 //   traction, against one-dimensional wave theory: the end displacement on
 //   the rising branch (t = L/2c, L/c) within 1 %, its extreme 2 p L / E1
 //   within 2 % (sampled every microsecond; the 3D bar's lateral inertia
-//   rounds the 1D kink) at 2 L / c within 3 %, back to rest at 4 L / c; energy
+//   rounds the 1D kink) at 2 L / c within 3 %, back to rest at 4 L / c; the
+//   front reaches the clamped end at L / c (within 2 %) and reflects with
+//   twice the stress (reaction 2 p A within 3 %); energy
 //   balance (work = kinetic + strain) within 1e-3 of the work at every output
 //   time; a fixed time step above the estimated stable step is an input error;
 // - dcb: a 2D DCB opened at 20 m/s (cohesive interfaces in an explicit
@@ -100,6 +102,29 @@ namespace
     CHECK_CLOSE(-h.value(extreme, "p0_ux"), u_max, 0.02 * u_max);
     CHECK_CLOSE(h.value(extreme, "time"), 2 * L / c, 0.03 * 2 * L / c);
     CHECK(std::abs(at_time(h, "p0_ux", 4 * L / c)) < 0.05 * u_max);
+    // At the clamped end the front arrives at L / c (the reaction crosses
+    // half its final value within 2 % of it) and reflects with twice the
+    // stress: a reaction of 2 p A until the unloading wave comes back.
+    const double A = 100, doubled = 2 * p * A;
+    double       arrival = 0, mean = 0;
+    unsigned int samples = 0;
+    for (std::size_t r = 1; r < h.n_rows() && arrival == 0; ++r)
+      if (h.value(r, "reaction_x+_x") > 0.5 * doubled)
+        {
+          const double f0 = h.value(r - 1, "reaction_x+_x"),
+                       f1 = h.value(r, "reaction_x+_x");
+          const double t0 = h.value(r - 1, "time"), t1 = h.value(r, "time");
+          arrival = t0 + (0.5 * doubled - f0) / (f1 - f0) * (t1 - t0);
+        }
+    for (std::size_t r = 0; r < h.n_rows(); ++r)
+      if (h.value(r, "time") > 1.2 * L / c && h.value(r, "time") < 2.8 * L / c)
+        mean += h.value(r, "reaction_x+_x"), ++samples;
+    mean /= samples;
+    std::cout << "front at the clamped end after " << arrival * c / L
+              << " L/c; mean reaction " << mean / doubled << " of 2 p A"
+              << std::endl;
+    CHECK_CLOSE(arrival, L / c, 0.02 * L / c);
+    CHECK_CLOSE(mean, doubled, 0.03 * doubled);
     double       work;
     const double error = largest_balance_error(h, work);
     CHECK(error < 1e-3 * work);
