@@ -1,5 +1,4 @@
 #include <algorithm>
-#include <amfrac/base/mpi_max.h>
 #include <amfrac/cohesive/interface_assembler.h>
 #include <amfrac/parameters/expressions.h>
 #include <amfrac/parameters/input_error.h>
@@ -614,10 +613,8 @@ namespace amfrac
   }
 
   template <int dim>
-  double
-  CohesiveInterfaces<dim>::max_frequency_squared(const Vector  &mass,
-                                                 Point<dim>    &where,
-                                                 const MPI_Comm comm) const
+  void
+  CohesiveInterfaces<dim>::add_penalty_row_sums(Vector &row_sums) const
   {
     const double shear = data.shear_stiffness;
     const double k
@@ -625,10 +622,6 @@ namespace amfrac
                   shear,
                   data.contact_penalty,
                   data.stick_penalty > 0 ? data.stick_penalty : shear});
-    // Row sums |K_ij| of the penalty springs, per dof; the same dof may
-    // sit in several elements.
-    std::map<types::global_dof_index, double>     row_sum;
-    std::map<types::global_dof_index, Point<dim>> position;
     for (const Element &e : elements)
       for (unsigned int q = 0; q < e.JxW.size(); ++q)
         for (unsigned int a = 0; a < e.dofs.size(); ++a)
@@ -639,17 +632,8 @@ namespace amfrac
             for (unsigned int b = 0; b < e.dofs.size(); ++b)
               if (e.component[b] == e.component[a])
                 row += std::abs(e.shape(q, b));
-            row_sum[e.dofs[a]] += k * e.JxW[q] * std::abs(e.shape(q, a)) * row;
-            position[e.dofs[a]] = e.points[q];
+            row_sums(e.dofs[a]) += k * e.JxW[q] * std::abs(e.shape(q, a)) * row;
           }
-    double worst = 0;
-    for (const auto &[dof, row] : row_sum)
-      if (row / mass(dof) > worst)
-        {
-          worst = row / mass(dof);
-          where = position[dof];
-        }
-    return max_and_where(worst, where, comm);
   }
 
 

@@ -761,6 +761,28 @@ namespace amfrac
                         "in x, y, (z) separated by ';' (one for all "
                         "components or one per component). Supported "
                         "nodes move as prescribed instead.");
+      prm.declare_entry("Mass scaling time step",
+                        "0",
+                        Patterns::Double(0),
+                        "Explicit: run with this time step [s], adding "
+                        "nodal mass where the estimated stable step is "
+                        "shorter than it over Safety factor: at the nodes "
+                        "of the interface penalty springs first, and all "
+                        "masses uniformly if the elements alone need it. "
+                        "The added mass is logged (total, share, largest "
+                        "factor and where). 0: no mass scaling.");
+      prm.declare_entry("Rayleigh mass damping",
+                        "0",
+                        Patterns::Double(0),
+                        "Explicit: alpha [1/s] of the damping force alpha M "
+                        "v; its work is the ledger column damping_work.");
+      prm.declare_entry("Rayleigh stiffness damping",
+                        "0",
+                        Patterns::Double(0),
+                        "Explicit: beta [s] of the damping force beta K v "
+                        "(K of the plies, not of the interfaces); it "
+                        "shortens the stable step by sqrt(1 + xi^2) - xi, "
+                        "xi = beta omega_max / 2.");
       prm.leave_subsection();
     }
 
@@ -777,7 +799,13 @@ namespace amfrac
       time_step         = prm.get_double("Time step");
       allow_unstable    = prm.get_bool("Allow unstable time step");
       initial_velocity  = split_expressions(prm.get("Initial velocity"));
+      mass_scaling_step = prm.get_double("Mass scaling time step");
+      rayleigh_alpha    = prm.get_double("Rayleigh mass damping");
+      rayleigh_beta     = prm.get_double("Rayleigh stiffness damping");
       prm.leave_subsection();
+      require(!(mass_scaling_step > 0 && time_step > 0),
+              "Time/Mass scaling time step",
+              "set either Time step or Mass scaling time step, not both");
       require(end_time > 0, "Time/End time", "must be positive");
       require(safety_factor > 0, "Time/Safety factor", "must be positive");
     }

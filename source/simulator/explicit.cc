@@ -39,14 +39,13 @@ namespace amfrac
 
   template <int dim>
   double
-  Simulator<dim>::stable_time_step(const Vector &relevant_mass)
+  Simulator<dim>::element_frequency_squared(Point<dim> &where) const
   {
-    // Bulk: by Irons' theorem the largest element omega^2 bounds the
-    // mesh's. Each ply's smallest elements (shortest edge) are examined
-    // exactly (power iteration on the element's M^-1 K).
-    double     bulk = 0;
-    Point<dim> bulk_where;
-    using Cell = typename TiedCopyDoFs<dim>::CellIterator;
+    // By Irons' theorem the largest element omega^2 bounds the mesh's.
+    // Each ply's smallest elements (shortest edge) are examined exactly
+    // (a dense eigenproblem of the element's M^-1 K).
+    double bulk = 0;
+    using Cell  = typename TiedCopyDoFs<dim>::CellIterator;
     std::map<unsigned int, std::vector<std::pair<double, Cell>>> by_ply;
     for (const auto &cell : dof_layer.copy_handler().active_cell_iterators())
       if (cell->is_locally_owned())
@@ -65,26 +64,148 @@ namespace amfrac
           {
             const double w2 = assembler.max_frequency_squared(cells[i].second);
             if (w2 > bulk)
-              bulk = w2, bulk_where = cells[i].second->center();
+              bulk = w2, where = cells[i].second->center();
           }
       }
-    const double global_bulk = max_and_where(bulk, bulk_where, comm);
-    // Interfaces: the penalty springs against the lumped masses. Both in
-    // the mass inner product, so omega^2 of the sum is at most the sum.
-    double     springs = 0;
-    Point<dim> spring_where;
+    return max_and_where(bulk, where, comm) / uniform_mass_factor;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::penalty_row_sums(Vector &row_sums) const
+  {
+    Vector with_ghosts;
+    with_ghosts.reinit(dof_layer.locally_owned_dofs(),
+                       dof_layer.locally_relevant_dofs(),
+                       comm,
+                       true);
     if (interfaces)
-      springs
-        = interfaces->max_frequency_squared(relevant_mass, spring_where, comm);
-    const double stable = 2. / std::sqrt(global_bulk + springs);
+      interfaces->add_penalty_row_sums(with_ghosts);
+    with_ghosts.compress(VectorOperation::add);
+    row_sums.reinit(dof_layer.locally_owned_dofs(), comm);
+    row_sums = with_ghosts;
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::stable_time_step(const Vector &mass)
+  {
+    Point<dim>   bulk_where, spring_where;
+    const double bulk = element_frequency_squared(bulk_where);
+    // Interfaces: Gershgorin's bound on M^-1 K of the penalty springs.
+    // Both bounds are Rayleigh quotients in the mass inner product, so
+    // omega^2 of the sum is at most the sum.
+    double springs = 0;
+    if (interfaces)
+      {
+        Vector rows;
+        penalty_row_sums(rows);
+        for (const auto i : dof_layer.locally_owned_dofs())
+          if (rows(i) / mass(i) > springs)
+            springs      = rows(i) / mass(i),
+            spring_where = dof_layer.support_point(i);
+        springs = max_and_where(springs, spring_where, comm);
+      }
+    double stable = 2. / std::sqrt(bulk + springs);
     pcout << "  stable time step " << stable << " s: elements alone "
-          << 2. / std::sqrt(global_bulk) << " s (at " << bulk_where << ")";
+          << 2. / std::sqrt(bulk) << " s (at " << bulk_where << ")";
     if (interfaces)
       pcout << ", interface penalties alone " << 2. / std::sqrt(springs)
             << " s (at " << spring_where << "); controlled by the "
-            << (springs > global_bulk ? "interfaces" : "elements");
+            << (springs > bulk ? "interfaces" : "elements");
     pcout << std::endl;
+    // Stiffness-proportional damping: central differences are stable up
+    // to (2 / omega) (sqrt(1 + xi^2) - xi) at the damping ratio xi of the
+    // highest mode.
+    const double beta = parameters.time.rayleigh_beta;
+    if (beta > 0)
+      {
+        const double xi = beta * std::sqrt(bulk + springs) / 2;
+        stable *= std::sqrt(1 + xi * xi) - xi;
+        pcout << "  with Rayleigh stiffness damping (damping ratio " << xi
+              << " at omega_max): " << stable << " s" << std::endl;
+      }
     return stable;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::scale_mass(Vector &mass, const double target)
+  {
+    const double budget
+      = std::pow(2 * parameters.time.safety_factor / target, 2);
+    Point<dim> where;
+    // The elements keep at most half of the budget, by a uniform factor.
+    uniform_mass_factor
+      *= std::max(1., element_frequency_squared(where) / (0.5 * budget));
+    const double springs_budget = budget - element_frequency_squared(where);
+    // Each node takes the mass its largest spring row needs; one factor
+    // for all its components and for both copies of a split node.
+    Vector rows;
+    penalty_row_sums(rows);
+    const auto less = [](const Point<dim> &a, const Point<dim> &b) {
+      for (unsigned int d = 0; d < dim; ++d)
+        if (a[d] != b[d])
+          return a[d] < b[d];
+      return false;
+    };
+    std::map<Point<dim>, double, decltype(less)> needed(less);
+    const IndexSet &owned = dof_layer.locally_owned_dofs();
+    for (const auto i : owned)
+      {
+        double &m = needed[dof_layer.support_point(i)];
+        m         = std::max(
+          {m, uniform_mass_factor * mass(i), rows(i) / springs_budget});
+      }
+    double original = 0, largest = 1;
+    added_mass = 0;
+    for (const auto i : owned)
+      {
+        const double m = needed[dof_layer.support_point(i)];
+        original += mass(i) / dim;
+        added_mass += (m - mass(i)) / dim;
+        if (m / mass(i) > largest)
+          largest = m / mass(i), where = dof_layer.support_point(i);
+        mass(i) = m;
+      }
+    mass.compress(VectorOperation::insert);
+    original   = Utilities::MPI::sum(original, comm);
+    added_mass = Utilities::MPI::sum(added_mass, comm);
+    largest    = max_and_where(largest, where, comm);
+    pcout << "  mass scaling to a step of " << target << " s: added "
+          << added_mass << " t (" << 100 * added_mass / original
+          << " % of the laminate's " << original << " t), largest nodal factor "
+          << largest << " at " << where;
+    if (uniform_mass_factor > 1)
+      pcout << ", all masses times " << uniform_mass_factor;
+    pcout << std::endl;
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::choose_time_step(const double stable) const
+  {
+    const auto &time = parameters.time;
+    if (time.mass_scaling_step > 0)
+      return std::min(time.mass_scaling_step, time.safety_factor * stable);
+    if (time.time_step == 0)
+      return time.safety_factor * stable;
+    if (time.time_step > stable && !time.allow_unstable)
+      throw InputError("Time/Time step",
+                       "the fixed step " + std::to_string(time.time_step)
+                         + " s exceeds the estimated stable step "
+                         + std::to_string(stable)
+                         + " s (set Time/Allow unstable time step = "
+                           "true to run it anyway)");
+    return time.time_step;
   }
 
 
@@ -146,31 +267,21 @@ namespace amfrac
       TimerOutput::Scope scope(timer, "lumped mass");
       assembler.lumped_mass(mass);
     }
-    Vector relevant_mass(owned, relevant, comm);
-    relevant_mass = mass;
-
-    const double end      = parameters.time.end_time;
-    const double interval = end / parameters.time.n_steps;
-    double       stable;
+    double stable;
     {
       TimerOutput::Scope scope(timer, "stable time step");
-      stable = stable_time_step(relevant_mass);
+      stable              = stable_time_step(mass);
+      const double target = parameters.time.mass_scaling_step;
+      if (target > 0 && parameters.time.safety_factor * stable < target)
+        {
+          scale_mass(mass, target);
+          stable = stable_time_step(mass);
+        }
     }
     estimated_stable_step = stable;
-    double dt             = parameters.time.safety_factor * stable;
-    if (parameters.time.time_step > 0)
-      {
-        if (parameters.time.time_step > stable
-            && !parameters.time.allow_unstable)
-          throw InputError("Time/Time step",
-                           "the fixed step "
-                             + std::to_string(parameters.time.time_step)
-                             + " s exceeds the estimated stable step "
-                             + std::to_string(stable)
-                             + " s (set Time/Allow unstable time step = "
-                               "true to run it anyway)");
-        dt = parameters.time.time_step;
-      }
+    double       dt       = choose_time_step(stable);
+    const double end      = parameters.time.end_time;
+    const double interval = end / parameters.time.n_steps;
     // Whole steps per output interval, so that output lands on its times.
     const unsigned int substeps = std::ceil(interval / dt * (1 - 1e-12));
     dt                          = interval / substeps;
@@ -208,6 +319,27 @@ namespace amfrac
     AffineConstraints<double> none;
     none.close();
     double strain_energy = 0;
+    // Rayleigh damping C v = alpha M v + beta K v, from the velocity at
+    // hand when the forces are evaluated (the half-step velocity), so that
+    // the scheme stays explicit.
+    const double alpha  = parameters.time.rayleigh_alpha;
+    const double beta   = parameters.time.rayleigh_beta;
+    const bool   damped = alpha > 0 || beta > 0;
+    Vector       damping_force(owned, comm), previous_damping(owned, comm),
+      stiffness_velocity(owned, comm);
+    double damping_work   = 0;
+    auto   update_damping = [&]() {
+      if (!damped)
+        return;
+      damping_force = velocity;
+      damping_force.scale(mass);
+      damping_force *= alpha;
+      if (beta > 0)
+        {
+          bulk->apply(velocity, stiffness_velocity);
+          damping_force.add(beta, stiffness_velocity);
+        }
+    };
     // Forces, reaction and acceleration of the state in `solution` at t.
     auto evaluate = [&](const double t) {
       {
@@ -227,6 +359,8 @@ namespace amfrac
           force += interface_force;
           interfaces->commit();
         }
+      if (damped)
+        force += damping_force;
       TimerOutput::Scope scope(timer, "loads");
       assembler.assemble_load(loads, t, loaded_cells, load);
       reaction = force;
@@ -254,9 +388,11 @@ namespace amfrac
            {"kinetic_energy", kinetic},
            {"strain_energy", strain_energy}};
       const double interface_work = add_interface_columns(columns);
+      if (damped)
+        columns.emplace_back("damping_work", damping_work);
       columns.emplace_back("balance_error",
                            initial_energy + external_work - kinetic
-                             - strain_energy - interface_work);
+                             - strain_energy - interface_work - damping_work);
       return columns;
     };
 
@@ -265,6 +401,7 @@ namespace amfrac
     double t = 0;
     impose_prescribed(t, solution);
     set_initial_velocity(free_inverse_mass, velocity);
+    update_damping();
     evaluate(t);
     initial_energy = strain_energy + kinetic_energy();
     postprocess(0, t, reaction, ledger_row());
@@ -293,11 +430,13 @@ namespace amfrac
             TimerOutput::Scope scope(timer, "time steps");
             previous_load     = load;
             previous_reaction = reaction;
+            previous_damping  = damping_force;
             velocity.add(0.5 * dt, acceleration);
             old_solution = solution;
             solution.add(dt, velocity);
             t = ((out - 1) * substeps + k + 1) * dt;
             impose_prescribed(t, solution);
+            update_damping();
             evaluate(t);
             velocity.add(0.5 * dt, acceleration);
             displacement_step = solution;
@@ -307,6 +446,11 @@ namespace amfrac
             external_work += 0.5
                              * (previous_load * displacement_step
                                 + previous_reaction * displacement_step);
+            if (damped)
+              {
+                previous_damping += damping_force;
+                damping_work += 0.5 * (previous_damping * displacement_step);
+              }
             // A step above the critical one shows as strain energy
             // growing beyond all the energy the run was given.
             if (!std::isfinite(strain_energy)

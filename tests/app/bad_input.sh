@@ -110,6 +110,12 @@ subsection Time
   set Time integration = explicit
   set Initial velocity = 0; 0; sin(
 end"
+expect mass_scaling_and_step "Time/Mass scaling time step" "$base
+subsection Time
+  set Time integration       = explicit
+  set Time step              = 1e-8
+  set Mass scaling time step = 2e-8
+end"
 expect unknown_material "unknown material 'glass'" "$(with '\[0/90\]s' '[0@glass/90]')"
 expect face_not_in_2d "Boundary conditions/z-/Type" "$(with 'set Dimension = 3' 'set Dimension = 2')
 subsection Boundary conditions

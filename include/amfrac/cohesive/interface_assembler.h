@@ -148,15 +148,13 @@ namespace amfrac
     std::vector<InterfacePointRecord<dim>>
     output_points(const Vector &solution) const;
 
-    /** Explicit dynamics: a bound on omega^2 of the interface springs
-     * against the lumped masses (@p mass, locally relevant), by
-     * Gershgorin's theorem on M^-1 K_penalty with the stiffest of the
-     * normal, shear, contact and stick penalties; the largest over all
-     * ranks, and where it occurs (@p where). */
-    double
-    max_frequency_squared(const Vector  &mass,
-                          Point<dim>    &where,
-                          const MPI_Comm comm) const;
+    /** Explicit dynamics: the row sums sum_j |K_ij| of the penalty
+     * springs (the stiffest of the normal, shear, contact and stick
+     * penalties) per dof, added into @p row_sums (writable with ghosts;
+     * the caller compresses). Against the lumped mass they bound omega^2
+     * by Gershgorin's theorem on M^-1 K. */
+    void
+    add_penalty_row_sums(Vector &row_sums) const;
 
     /** Number of interface quadrature points on this rank. */
     std::size_t

@@ -189,6 +189,11 @@ namespace amfrac
       bool allow_unstable;
       /** Explicit: initial velocity expressions in x, y, (z). */
       std::vector<std::string> initial_velocity;
+      /** Explicit: add nodal mass so that this step is stable (0: off). */
+      double mass_scaling_step;
+      /** Explicit: Rayleigh damping C = alpha M + beta K (bulk K). */
+      double rayleigh_alpha;
+      double rayleigh_beta;
 
       static void
       declare_parameters(ParameterHandler &prm);

@@ -90,6 +90,13 @@ namespace amfrac
       return estimated_stable_step;
     }
 
+    /** Explicit runs with mass scaling: the mass added [t]. */
+    double
+    mass_added_by_scaling() const
+    {
+      return added_mass;
+    }
+
     /** The cohesive interfaces (nullptr if the scene has none). */
     const CohesiveInterfaces<dim> *
     cohesive_interfaces() const
@@ -112,17 +119,21 @@ namespace amfrac
                   const VectorTools::NormType norm) const;
 
   private:
-    const parameters::Parameters             parameters;
-    const MPI_Comm                           comm;
-    ConditionalOStream                       pcout;
-    mutable TimerOutput                      timer;
-    parallel::shared::Triangulation<dim>     triangulation;
-    Laminate                                 laminate;
-    std::vector<PlyProperties<dim>>          plies;
-    TiedCopyDoFs<dim>                        dof_layer;
-    ElasticAssembler<dim>                    assembler;
-    Loads<dim>                               loads;
-    double                                   estimated_stable_step = 0;
+    const parameters::Parameters         parameters;
+    const MPI_Comm                       comm;
+    ConditionalOStream                   pcout;
+    mutable TimerOutput                  timer;
+    parallel::shared::Triangulation<dim> triangulation;
+    Laminate                             laminate;
+    std::vector<PlyProperties<dim>>      plies;
+    TiedCopyDoFs<dim>                    dof_layer;
+    ElasticAssembler<dim>                assembler;
+    Loads<dim>                           loads;
+    double                               estimated_stable_step = 0;
+    /** Explicit mass scaling: the added mass [t] and the uniform factor
+     * of all masses (1: none). */
+    double                                   added_mass          = 0;
+    double                                   uniform_mass_factor = 1;
     std::vector<PrescribedDisplacement<dim>> prescribed;
     Lever<dim>                               lever;
     std::unique_ptr<PointProbe<dim>>         probe;
@@ -211,9 +222,23 @@ namespace amfrac
     void
     check_explicit_input() const;
     /** 2 / omega_max from the elements and the interface penalties
-     * (logged with where each bound is attained). */
+     * against the lumped @p mass (logged with where each bound is
+     * attained), shortened for Rayleigh stiffness damping. */
     double
-    stable_time_step(const Vector &relevant_mass);
+    stable_time_step(const Vector &mass);
+    /** The largest element omega^2 (Irons), and where. */
+    double
+    element_frequency_squared(Point<dim> &where) const;
+    /** Gershgorin row sums of the interface penalty springs per dof. */
+    void
+    penalty_row_sums(Vector &row_sums) const;
+    /** Mass scaling: add nodal mass so that @p target is Safety factor
+     * times the stable step; logs and sets added_mass. */
+    void
+    scale_mass(Vector &mass, const double target);
+    /** The explicit step from the estimate and the Time parameters. */
+    double
+    choose_time_step(const double stable) const;
     /** The prescribed displacements at @p t into the supported dofs. */
     void
     impose_prescribed(const double t, Vector &u) const;
