@@ -31,14 +31,18 @@ namespace amfrac
   template <int dim>
   BulkForceOperator<dim>::BulkForceOperator(
     const TiedCopyDoFs<dim>     &dofs,
-    const ElasticAssembler<dim> &assembler)
+    const ElasticAssembler<dim> &assembler,
+    CohesiveInterfaces<dim>     *interfaces)
     : comm(dofs.copy_handler().get_triangulation().get_communicator())
     , kernel(dofs.get_fe().n_dofs_per_cell())
+    , interfaces(interfaces)
   {
     const auto partitioner = std::make_shared<Utilities::MPI::Partitioner>(
       dofs.locally_owned_dofs(), dofs.locally_relevant_dofs(), comm);
     u.reinit(partitioner);
     f.reinit(partitioner);
+    if (interfaces)
+      interfaces->set_local_indices(*partitioner);
     const unsigned int                   n = dofs.get_fe().n_dofs_per_cell();
     std::vector<types::global_dof_index> indices(n);
     std::vector<unsigned int>            local(n);
@@ -70,7 +74,9 @@ namespace amfrac
 
   template <int dim>
   double
-  BulkForceOperator<dim>::apply(const Vector &solution, Vector &force) const
+  BulkForceOperator<dim>::apply(const Vector &solution,
+                                Vector       &force,
+                                const bool    with_interfaces) const
   {
     // Owned entries are stored in the same (ascending) order in both
     // vector types.
@@ -80,6 +86,8 @@ namespace amfrac
     u.update_ghost_values();
     f                   = 0;
     const double energy = kernel.apply(u.get_values(), f.get_values());
+    if (with_interfaces && interfaces)
+      interfaces->add_forces(u.get_values(), f.get_values());
     f.compress(VectorOperation::add);
     std::copy(f.begin(), f.begin() + n_owned, force.begin());
     return Utilities::MPI::sum(energy, comm);

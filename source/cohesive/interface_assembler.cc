@@ -411,6 +411,59 @@ namespace amfrac
 
   template <int dim>
   void
+  CohesiveInterfaces<dim>::set_local_indices(
+    const Utilities::MPI::Partitioner &partitioner)
+  {
+    for (Element &element : elements)
+      {
+        element.local_dofs.clear();
+        for (const auto i : element.dofs)
+          element.local_dofs.push_back(partitioner.global_to_local(i));
+        element.start = {0};
+        element.nonzero.clear();
+        for (unsigned int q = 0; q < element.JxW.size(); ++q)
+          {
+            for (unsigned int k = 0; k < element.dofs.size(); ++k)
+              if (element.shape(q, k) != 0)
+                element.nonzero.emplace_back(k, element.shape(q, k));
+            element.start.push_back(element.nonzero.size());
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  CohesiveInterfaces<dim>::add_forces(const double *u, double *f)
+  {
+    Tensor<2, dim> D;
+    for (Element &element : elements)
+      for (unsigned int q = 0; q < element.JxW.size(); ++q)
+        {
+          const auto     first = element.nonzero.begin() + element.start[q];
+          const auto     last  = element.nonzero.begin() + element.start[q + 1];
+          Tensor<1, dim> global_gap;
+          for (auto entry = first; entry != last; ++entry)
+            global_gap[element.component[entry->first]]
+              += entry->second * u[element.local_dofs[entry->first]];
+          const Tensor<2, dim> &F = element.frame[q];
+          element.trial[q] = evaluate(element.converged[q], F * global_gap, D);
+          const Tensor<1, dim> traction
+            = transpose(F)
+              * (element.trial[q].traction + element.trial[q].viscous)
+              * element.JxW[q];
+          for (auto entry = first; entry != last; ++entry)
+            f[element.local_dofs[entry->first]]
+              += entry->second * traction[element.component[entry->first]];
+          element.converged[q] = element.trial[q];
+        }
+  }
+
+
+
+  template <int dim>
+  void
   CohesiveInterfaces<dim>::count_contact_change(Element           &element,
                                                 const unsigned int q)
   {

@@ -259,8 +259,7 @@ namespace amfrac
     const IndexSet &relevant = dof_layer.locally_relevant_dofs();
     Vector mass(owned, comm), velocity(owned, comm), acceleration(owned, comm),
       force(owned, comm), load(owned, comm), previous_load(owned, comm),
-      reaction(owned, comm), previous_reaction(owned, comm), interface_force;
-    interface_force.reinit(owned, relevant, comm, true);
+      reaction(owned, comm), previous_reaction(owned, comm);
     solution.reinit(owned, comm);
     relevant_solution.reinit(owned, relevant, comm);
     {
@@ -311,13 +310,13 @@ namespace amfrac
     std::unique_ptr<BulkForceOperator<dim>> bulk;
     {
       TimerOutput::Scope scope(timer, "element matrices");
-      bulk = std::make_unique<BulkForceOperator<dim>>(dof_layer, assembler);
+      bulk = std::make_unique<BulkForceOperator<dim>>(dof_layer,
+                                                      assembler,
+                                                      interfaces.get());
     }
     pcout << "  bulk force: " << bulk->summary() << std::endl;
     const auto loaded_cells = assembler.loaded_cells(loads);
 
-    AffineConstraints<double> none;
-    none.close();
     double strain_energy = 0;
     // Rayleigh damping C v = alpha M v + beta K v, from the velocity at
     // hand when the forces are evaluated (the half-step velocity), so that
@@ -343,22 +342,9 @@ namespace amfrac
     // Forces, reaction and acceleration of the state in `solution` at t.
     auto evaluate = [&](const double t) {
       {
-        TimerOutput::Scope scope(timer, "bulk force");
-        strain_energy = bulk->apply(solution, force);
+        TimerOutput::Scope scope(timer, "internal forces");
+        strain_energy = bulk->apply(solution, force, true);
       }
-      if (interfaces)
-        {
-          TimerOutput::Scope scope(timer, "interfaces");
-          relevant_solution = solution;
-          interface_force   = 0;
-          interfaces->assemble(relevant_solution,
-                               interface_force,
-                               none,
-                               nullptr);
-          interface_force.compress(VectorOperation::add);
-          force += interface_force;
-          interfaces->commit();
-        }
       if (damped)
         force += damping_force;
       TimerOutput::Scope scope(timer, "loads");

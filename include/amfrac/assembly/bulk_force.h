@@ -2,16 +2,19 @@
 
 #include <amfrac/assembly/elastic_assembler.h>
 #include <amfrac/assembly/element_kernel.h>
+#include <amfrac/cohesive/interface_assembler.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <string>
 
 namespace amfrac
 {
   /**
-   * The bulk force K u of explicit dynamics without a global matrix: the
-   * element matrices of the locally owned cells, shared among cells of the
-   * same ply and shape (ElementMatrixKernel), applied to a ghosted copy of
-   * u; contributions to ghost dofs are sent to their owners.
+   * The internal force of explicit dynamics without a global matrix: K u
+   * from the element matrices of the locally owned cells, shared among
+   * cells of the same ply and shape (ElementMatrixKernel), plus, if given,
+   * the cohesive interface forces (CohesiveInterfaces::add_forces), all on
+   * one ghosted copy of u; contributions to ghost dofs are sent to their
+   * owners once.
    */
   template <int dim>
   class BulkForceOperator
@@ -19,13 +22,19 @@ namespace amfrac
   public:
     using Vector = TrilinosWrappers::MPI::Vector;
 
+    /** @p interfaces (may be null) get their local indices here. */
     BulkForceOperator(const TiedCopyDoFs<dim>     &dofs,
-                      const ElasticAssembler<dim> &assembler);
+                      const ElasticAssembler<dim> &assembler,
+                      CohesiveInterfaces<dim>     *interfaces = nullptr);
 
-    /** @p force = K @p solution (both without ghosts); returns the strain
-     * energy summed over all ranks. */
+    /** @p force = K @p solution (both without ghosts), plus the interface
+     * forces if @p with_interfaces (which updates and commits their
+     * history); returns the strain energy of the plies summed over all
+     * ranks. */
     double
-    apply(const Vector &solution, Vector &force) const;
+    apply(const Vector &solution,
+          Vector       &force,
+          const bool    with_interfaces = false) const;
 
     /** Element and matrix counts and the memory they take (all ranks). */
     std::string
@@ -34,6 +43,7 @@ namespace amfrac
   private:
     MPI_Comm                                           comm;
     ElementMatrixKernel                                kernel;
+    CohesiveInterfaces<dim>                           *interfaces;
     mutable LinearAlgebra::distributed::Vector<double> u;
     mutable LinearAlgebra::distributed::Vector<double> f;
   };

@@ -5,6 +5,7 @@
 #include <amfrac/dofs/tied_copy_dofs.h>
 #include <amfrac/parameters/parameters.h>
 #include <amfrac/postprocess/interface_output.h>
+#include <deal.II/base/partitioner.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
@@ -118,6 +119,19 @@ namespace amfrac
     void
     commit();
 
+    /** Explicit dynamics: number the element dofs in the local arrays of
+     * @p partitioner (owned, then ghosts) for add_forces(). */
+    void
+    set_local_indices(const Utilities::MPI::Partitioner &partitioner);
+
+    /** Explicit dynamics: @p f += the interface forces of the jumps of
+     * @p u (local arrays, see set_local_indices()); updates the trial
+     * states, and commits them. The same laws and sums as assemble()
+     * without a tangent, on local indices and the nonzero shape values
+     * only. */
+    void
+    add_forces(const double *u, double *f);
+
     /** Energies (per unit width in 2D) and areas of one interface. */
     struct Ledger
     {
@@ -195,6 +209,12 @@ namespace amfrac
       /** Contact status of debonded points at the last assemble() with a
        * tangent: 0 open, 1 sticking, 2 slipping. */
       std::vector<unsigned char> status;
+      /** Explicit dynamics: local indices of dofs, and per point q the
+       * nonzero shape values (local dof k, value) in
+       * nonzero[start[q] .. start[q + 1]). */
+      std::vector<unsigned int>                    local_dofs;
+      std::vector<unsigned int>                    start;
+      std::vector<std::pair<unsigned int, double>> nonzero;
     };
 
     const parameters::CohesiveInterfaces    data;
