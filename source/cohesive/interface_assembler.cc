@@ -374,13 +374,9 @@ namespace amfrac
             Tensor<1, dim> global_gap;
             for (unsigned int k = 0; k < n; ++k)
               global_gap[element.component[k]] += element.shape(q, k) * u(k);
-            const Tensor<2, dim> &F = element.frame[q];
-            element.trial[q]
-              = evaluate(element.converged[q], F * global_gap, D);
             const Tensor<1, dim> traction
-              = transpose(F)
-                * (element.trial[q].traction + element.trial[q].viscous)
-                * element.JxW[q];
+              = point_force(element, q, global_gap, D);
+            const Tensor<2, dim> &F = element.frame[q];
             for (unsigned int k = 0; k < n; ++k)
               r(k) += element.shape(q, k) * traction[element.component[k]];
             if (!tangent)
@@ -405,6 +401,21 @@ namespace amfrac
         if (tangent)
           constraints.distribute_local_to_global(K, element.dofs, *tangent);
       }
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  CohesiveInterfaces<dim>::point_force(Element              &element,
+                                       const unsigned int    q,
+                                       const Tensor<1, dim> &global_gap,
+                                       Tensor<2, dim>       &tangent) const
+  {
+    const Tensor<2, dim> &F = element.frame[q];
+    element.trial[q] = evaluate(element.converged[q], F * global_gap, tangent);
+    return transpose(F) * (element.trial[q].traction + element.trial[q].viscous)
+           * element.JxW[q];
   }
 
 
@@ -447,12 +458,8 @@ namespace amfrac
           for (auto entry = first; entry != last; ++entry)
             global_gap[element.component[entry->first]]
               += entry->second * u[element.local_dofs[entry->first]];
-          const Tensor<2, dim> &F = element.frame[q];
-          element.trial[q] = evaluate(element.converged[q], F * global_gap, D);
           const Tensor<1, dim> traction
-            = transpose(F)
-              * (element.trial[q].traction + element.trial[q].viscous)
-              * element.JxW[q];
+            = point_force(element, q, global_gap, D);
           for (auto entry = first; entry != last; ++entry)
             f[element.local_dofs[entry->first]]
               += entry->second * traction[element.component[entry->first]];

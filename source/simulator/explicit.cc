@@ -140,11 +140,12 @@ namespace amfrac
   {
     const double budget
       = std::pow(2 * parameters.time.safety_factor / target, 2);
-    Point<dim> where;
     // The elements keep at most half of the budget, by a uniform factor.
-    uniform_mass_factor
-      *= std::max(1., element_frequency_squared(where) / (0.5 * budget));
-    const double springs_budget = budget - element_frequency_squared(where);
+    Point<dim>   where;
+    const double bulk    = element_frequency_squared(where);
+    const double uniform = std::max(1., bulk / (0.5 * budget));
+    uniform_mass_factor *= uniform;
+    const double springs_budget = budget - bulk / uniform;
     // Each node takes the mass its largest spring row needs; one factor
     // for all its components and for both copies of a split node.
     Vector rows;

@@ -222,8 +222,17 @@ namespace amfrac
     const cohesive::CamanhoDavilaProperties camanho_davila;
     std::vector<Element>                    elements;
     double                                  time_step = 1;
-    bool                                    unchanged = false;
-    unsigned long                           changes = 0, previous_changes = 0;
+
+    /** Evaluate point @p q of @p element at @p global_gap (trial state,
+     * local @p tangent); returns its traction in the global frame times
+     * JxW. */
+    Tensor<1, dim>
+                  point_force(Element              &element,
+                              const unsigned int    q,
+                              const Tensor<1, dim> &global_gap,
+                              Tensor<2, dim>       &tangent) const;
+    bool          unchanged = false;
+    unsigned long changes = 0, previous_changes = 0;
 
     void
     count_contact_change(Element &element, const unsigned int q);
