@@ -475,9 +475,15 @@ namespace amfrac
             row.emplace_back("reaction_" + prescribed[k].name + "_" + axis[d],
                              Utilities::MPI::sum(force[d], comm));
       }
-    const auto conjugate = conjugate_forces(t, residual);
-    for (unsigned int k = 0; k < prescribed.size(); ++k)
-      row.emplace_back("force_" + prescribed[k].name, conjugate[k]);
+    // The force conjugate to t is a load factor's force in pseudo-time;
+    // in physical time (explicit) it would be a power, so it is left out
+    // there (the reactions are reported above).
+    if (!parameters.time.explicit_dynamics)
+      {
+        const auto conjugate = conjugate_forces(t, residual);
+        for (unsigned int k = 0; k < prescribed.size(); ++k)
+          row.emplace_back("force_" + prescribed[k].name, conjugate[k]);
+      }
     if (lever.active())
       {
         const auto [hinge, saddle] = lever.displacements(relevant_solution);
