@@ -348,14 +348,23 @@ namespace amfrac
       }
       if (damped)
         force += damping_force;
-      TimerOutput::Scope scope(timer, "loads");
-      assembler.assemble_load(loads, t, loaded_cells, load);
-      reaction = force;
-      reaction -= load;
-      acceleration = reaction;
-      acceleration *= -1;
-      acceleration.scale(free_inverse_mass);
-      reaction.scale(support_mask);
+      {
+        TimerOutput::Scope scope(timer, "loads");
+        assembler.assemble_load(loads, t, loaded_cells, load);
+      }
+      // One pass over the owned entries (all four vectors share the
+      // layout): a = (f_ext - f_int) / m on free dofs, the reaction
+      // f_int - f_ext on the supports.
+      const double *f_int = force.begin(), *f_ext = load.begin(),
+                   *inverse_mass = free_inverse_mass.begin(),
+                   *support      = support_mask.begin();
+      double *a = acceleration.begin(), *r = reaction.begin();
+      for (std::size_t i = 0; i < force.locally_owned_size(); ++i)
+        {
+          const double residual = f_int[i] - f_ext[i];
+          a[i]                  = -residual * inverse_mass[i];
+          r[i]                  = residual * support[i];
+        }
     };
 
     // The energy the run starts with (initial velocity, prescribed
