@@ -1279,6 +1279,7 @@ namespace amfrac
       NonlinearSolver::declare_parameters(prm);
       Time::declare_parameters(prm);
       Output::declare_parameters(prm);
+      Adaptivity::declare_parameters(prm);
     }
 
 
@@ -1298,6 +1299,105 @@ namespace amfrac
       nonlinear_solver.parse_parameters(prm);
       time.parse_parameters(prm);
       output.parse_parameters(prm, dimension);
+      adaptivity.parse_parameters(prm);
+      if (adaptivity.active() && !cohesive.interfaces.empty())
+        throw InputError("Adaptivity/Refinement cycles",
+                         "adaptive refinement of scenes with cohesive "
+                         "interfaces is not available yet; set Refinement "
+                         "cycles = 0 or Cohesive interfaces = none");
+      if (adaptivity.active() && time.explicit_dynamics)
+        throw InputError("Adaptivity/Refinement cycles",
+                         "adaptive refinement of explicit runs is not "
+                         "available yet; set Refinement cycles = 0");
+    }
+
+
+
+    void
+    Adaptivity::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Adaptivity");
+      prm.declare_entry("Refinement cycles",
+                        "0",
+                        Patterns::Integer(0, 30),
+                        "Number of solve-estimate-refine cycles after the "
+                        "first solve (0: no adaptivity). Each cycle solves "
+                        "all load steps on the current mesh, estimates the "
+                        "error at the last step and refines.");
+      prm.declare_entry("Estimator",
+                        "zz",
+                        Patterns::Selection("zz|kelly"),
+                        "zz: Zienkiewicz-Zhu, stress recovered ply by ply "
+                        "(superconvergent patch recovery), error in the "
+                        "energy norm "
+                        "[sqrt(N mm)]; kelly: traction jumps across faces "
+                        "(none across ply interfaces with continuous "
+                        "traction) and traction residuals on unsupported "
+                        "boundary faces. The relative ZZ error is reported "
+                        "with either.");
+      prm.declare_entry("Strategy",
+                        "fixed fraction",
+                        Patterns::Selection(
+                          "uniform|fixed fraction|fixed number|error target"),
+                        "uniform: refine every cell; fixed fraction: refine "
+                        "the cells holding Refine fraction of the total "
+                        "squared error (coarsen those holding Coarsen "
+                        "fraction); fixed number: refine Refine fraction of "
+                        "the cells (coarsen Coarsen fraction); error target: "
+                        "refine every cell whose ZZ error exceeds its equal "
+                        "share of Target error and stop once the relative "
+                        "ZZ error is below Target error.");
+      prm.declare_entry("Refine fraction",
+                        "0.3",
+                        Patterns::Double(0, 1),
+                        "Fraction of the squared error (fixed fraction) or "
+                        "of the cells (fixed number) to refine.");
+      prm.declare_entry("Coarsen fraction",
+                        "0",
+                        Patterns::Double(0, 1),
+                        "Fraction of the squared error or of the cells to "
+                        "coarsen (never below the initial mesh).");
+      prm.declare_entry("Target error",
+                        "0.01",
+                        Patterns::Double(0, 1),
+                        "Strategy = error target: the relative ZZ error "
+                        "||e*|| / sqrt(||u_h||^2 + ||e*||^2) to reach.");
+      prm.declare_entry("Maximum refinement level",
+                        "10",
+                        Patterns::Integer(1, 30),
+                        "Cells of this level (0: the initial structured "
+                        "mesh before global refinements) are not refined.");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Adaptivity::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Adaptivity");
+      cycles    = prm.get_integer("Refinement cycles");
+      estimator = prm.get("Estimator") == "kelly" ? Estimator::kelly :
+                                                    Estimator::zienkiewicz_zhu;
+      const std::string name = prm.get("Strategy");
+      strategy               = name == "uniform"        ? Strategy::uniform :
+                               name == "fixed fraction" ? Strategy::fixed_fraction :
+                               name == "fixed number" ? Strategy::fixed_number :
+                                                        Strategy::error_target;
+      refine_fraction        = prm.get_double("Refine fraction");
+      coarsen_fraction       = prm.get_double("Coarsen fraction");
+      target_error           = prm.get_double("Target error");
+      max_level              = prm.get_integer("Maximum refinement level");
+      prm.leave_subsection();
+      if (strategy == Strategy::error_target && estimator == Estimator::kelly)
+        throw InputError("Adaptivity/Strategy",
+                         "error target needs Estimator = zz: the Kelly "
+                         "indicator is not a relative error");
+      if (strategy == Strategy::fixed_fraction
+          && refine_fraction + coarsen_fraction > 1)
+        throw InputError("Adaptivity/Coarsen fraction",
+                         "Refine fraction + Coarsen fraction must not exceed "
+                         "1");
     }
 
 

@@ -142,6 +142,9 @@ namespace amfrac
       }
     data_out.add_data_vector(ply, "ply", DataOut<dim>::type_cell_data);
     data_out.add_data_vector(owner, "mpi_rank", DataOut<dim>::type_cell_data);
+    for (const auto &[name, values] : cell_fields)
+      if (values.size() == ply.size())
+        data_out.add_data_vector(values, name, DataOut<dim>::type_cell_data);
     data_out.build_patches(dofs.get_fe().degree);
 
     const std::string stem

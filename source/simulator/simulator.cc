@@ -46,6 +46,25 @@ namespace amfrac
       }
     build_loads_and_supports();
 
+    make_probe();
+    summary
+      = std::make_unique<History>(parameters.output.directory + "/history.csv",
+                                  Utilities::MPI::this_mpi_process(comm) == 0);
+    if (parameters.output.write_vtu || parameters.output.write_xdmf)
+      field_output = std::make_unique<FieldOutput<dim>>(parameters.output,
+                                                        dof_layer,
+                                                        plies);
+    if (parameters.output.write_vtu && interfaces)
+      interface_output
+        = std::make_unique<InterfaceOutput<dim>>(parameters.output, comm);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::make_probe()
+  {
     std::vector<Point<dim>> points;
     for (const Point<3> &p : parameters.output.points)
       {
@@ -62,16 +81,6 @@ namespace amfrac
       {
         throw InputError("Output/Point values", e.what());
       }
-    summary
-      = std::make_unique<History>(parameters.output.directory + "/history.csv",
-                                  Utilities::MPI::this_mpi_process(comm) == 0);
-    if (parameters.output.write_vtu || parameters.output.write_xdmf)
-      field_output = std::make_unique<FieldOutput<dim>>(parameters.output,
-                                                        dof_layer,
-                                                        plies);
-    if (parameters.output.write_vtu && interfaces)
-      interface_output
-        = std::make_unique<InterfaceOutput<dim>>(parameters.output, comm);
   }
 
 
@@ -344,12 +353,18 @@ namespace amfrac
     // error, raised before anything is written.
     collect_supports();
     prepare_output_directory();
+    clock.restart();
     if (parameters.time.explicit_dynamics)
       run_explicit();
     else if (interfaces)
       run_newton();
+    else if (parameters.adaptivity.active())
+      run_adaptive();
     else
-      run_linear();
+      {
+        run_linear();
+        timer.print_wall_time_statistics(comm);
+      }
   }
 
 
@@ -403,6 +418,13 @@ namespace amfrac
           pcout << "  step " << step << " t=" << t << ": " << report.iterations
                 << " iteration(s), " << report.seconds << " s" << std::endl;
         }
+        if (parameters.adaptivity.active() && step == n_steps)
+          {
+            estimate_error(t);
+            if (field_output)
+              field_output->set_cell_field("error_indicator",
+                                           last_estimate.cell_errors);
+          }
         Vector residual;
         residual.reinit(dof_layer.locally_owned_dofs(),
                         dof_layer.locally_relevant_dofs(),
@@ -416,7 +438,6 @@ namespace amfrac
                     {{"strain_energy", energies.strain_energy},
                      {"load_work", energies.load_work}});
       }
-    timer.print_wall_time_statistics(comm);
   }
 
 
@@ -503,6 +524,7 @@ namespace amfrac
             values[p].stress[voigt_pairs[k][0]][voigt_pairs[k][1]]);
       }
     summary->add_row(row);
+    last_row = row;
 
     if (step % parameters.output.every_n_steps == 0
         || t >= parameters.time.end_time * (1 - 1e-12))
@@ -518,7 +540,12 @@ namespace amfrac
     if (!field_output)
       return;
     dof_layer.expand(relevant_solution, copy_values);
-    field_output->write(step, t, copy_values);
+    // Adaptive cycles continue the series: cycle c is shown at times
+    // c * End time + t.
+    const unsigned int n_steps = parameters.time.n_steps;
+    field_output->write(cycle * n_steps + step,
+                        cycle * parameters.time.end_time + t,
+                        copy_values);
     if (!interfaces)
       return;
     const auto points = interfaces->output_points(relevant_solution);

@@ -279,6 +279,33 @@ subsection Boundary conditions
   end
 end"
 
+expect adaptivity_target_kelly "Adaptivity/Strategy" "$base
+subsection Adaptivity
+  set Refinement cycles = 2
+  set Estimator = kelly
+  set Strategy = error target
+end"
+expect adaptivity_fractions "Adaptivity/Coarsen fraction" "$base
+subsection Adaptivity
+  set Refinement cycles = 2
+  set Refine fraction = 0.7
+  set Coarsen fraction = 0.4
+end"
+expect adaptivity_interfaces "Adaptivity/Refinement cycles" "$base
+subsection Cohesive interfaces
+  set Interfaces = all
+end
+subsection Adaptivity
+  set Refinement cycles = 2
+end"
+expect adaptivity_explicit "Adaptivity/Refinement cycles" "$base
+subsection Time
+  set Time integration = explicit
+end
+subsection Adaptivity
+  set Refinement cycles = 2
+end"
+
 # A missing file and an unknown option.
 "$amfrac" no_such_file.prm > /dev/null 2> missing.stderr
 status=$?

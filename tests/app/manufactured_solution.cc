@@ -5,6 +5,7 @@
 // Q2; the ConvergenceTable is printed and compared with numdiff against
 // the stored regression values.
 #include "../check.h"
+#include "manufactured.h"
 
 #include <amfrac/parameters/parameters.h>
 #include <amfrac/simulator/simulator.h>
@@ -17,62 +18,8 @@ using namespace amfrac;
 
 namespace
 {
-  const double wave[3][3] = {{1.1, 0.7, 0.9}, {0.6, 1.3, 0.8}, {0.9, 0.5, 1.2}};
-  const double phase[3]   = {0.3, 1.1, 0.7};
-
-  double
-  argument(const Point<3> &p, const unsigned int k)
-  {
-    return wave[k][0] * p[0] + wave[k][1] * p[1] + wave[k][2] * p[2] + phase[k];
-  }
-
-  class Exact : public Function<3>
-  {
-  public:
-    Exact()
-      : Function<3>(3)
-    {}
-
-    double
-    value(const Point<3> &p, const unsigned int k) const override
-    {
-      return std::sin(argument(p, k));
-    }
-
-    Tensor<1, 3>
-    gradient(const Point<3> &p, const unsigned int k) const override
-    {
-      Tensor<1, 3> g;
-      for (unsigned int d = 0; d < 3; ++d)
-        g[d] = wave[k][d] * std::cos(argument(p, k));
-      return g;
-    }
-  };
-
-  /** f_i = -C_ijkl d_j d_l u_k = sum C_ijkl a^k_j a^k_l sin(a^k . x). */
-  class BodyForce : public Function<3>
-  {
-  public:
-    explicit BodyForce(const SymmetricTensor<4, 3> &C)
-      : Function<3>(3)
-      , C(C)
-    {}
-
-    double
-    value(const Point<3> &p, const unsigned int i) const override
-    {
-      double f = 0;
-      for (unsigned int k = 0; k < 3; ++k)
-        for (unsigned int j = 0; j < 3; ++j)
-          for (unsigned int l = 0; l < 3; ++l)
-            f += C[i][j][k][l] * wave[k][j] * wave[k][l]
-                 * std::sin(argument(p, k));
-      return f;
-    }
-
-  private:
-    const SymmetricTensor<4, 3> C;
-  };
+  using amfrac_test::BodyForce;
+  using amfrac_test::Exact;
 
   const char *scene = R"(
 set Dimension = 3

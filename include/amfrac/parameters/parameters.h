@@ -282,6 +282,41 @@ namespace amfrac
       parse_parameters(ParameterHandler &prm);
     };
 
+    /** `subsection Adaptivity`: the refinement cycle of static scenes. */
+    struct Adaptivity
+    {
+      enum class Estimator
+      {
+        zienkiewicz_zhu,
+        kelly
+      };
+      enum class Strategy
+      {
+        uniform,
+        fixed_fraction,
+        fixed_number,
+        error_target
+      };
+      Estimator    estimator;
+      Strategy     strategy;
+      unsigned int cycles;
+      double       refine_fraction;
+      double       coarsen_fraction;
+      double       target_error;
+      unsigned int max_level;
+
+      bool
+      active() const
+      {
+        return cycles > 0;
+      }
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
     /** All parameters of a run. */
     struct Parameters
     {
@@ -295,6 +330,7 @@ namespace amfrac
       NonlinearSolver    nonlinear_solver;
       Time               time;
       Output             output;
+      Adaptivity         adaptivity;
 
       static void
       declare_parameters(ParameterHandler &prm);

@@ -6,6 +6,7 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_postprocessor.h>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -59,12 +60,28 @@ namespace amfrac
           const double                  time,
           const dealii::Vector<double> &copy_values);
 
+    /** A per-cell field (one value per active cell) written with every
+     * later step until replaced. */
+    void
+    set_cell_field(const std::string &name, const dealii::Vector<float> &values)
+    {
+      cell_fields[name] = values;
+    }
+
+    /** Forget the per-cell fields (the mesh changed). */
+    void
+    clear_cell_fields()
+    {
+      cell_fields.clear();
+    }
+
   private:
-    const parameters::Output                   &parameters;
-    const TiedCopyDoFs<dim>                    &dofs;
-    StressPostprocessor<dim>                    postprocessor;
-    std::vector<std::pair<double, std::string>> pvd_records;
-    std::vector<XDMFEntry>                      xdmf_entries;
+    std::map<std::string, dealii::Vector<float>> cell_fields;
+    const parameters::Output                    &parameters;
+    const TiedCopyDoFs<dim>                     &dofs;
+    StressPostprocessor<dim>                     postprocessor;
+    std::vector<std::pair<double, std::string>>  pvd_records;
+    std::vector<XDMFEntry>                       xdmf_entries;
 
     std::string
     path(const std::string &name) const;

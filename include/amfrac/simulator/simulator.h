@@ -1,5 +1,6 @@
 #pragma once
 
+#include <amfrac/adaptivity/error_estimator.h>
 #include <amfrac/assembly/elastic_assembler.h>
 #include <amfrac/assembly/lever.h>
 #include <amfrac/assembly/loads.h>
@@ -113,6 +114,18 @@ namespace amfrac
                           std::vector<InterfacePointRecord<dim>>();
     }
 
+    /** Adaptive runs: the estimate of the last cycle. */
+    const typename ErrorEstimator<dim>::Estimate &
+    error_estimate() const
+    {
+      return last_estimate;
+    }
+
+    /** The ZZ and the true error in the energy norm of the last step
+     * against @p exact (dim components with gradients). */
+    std::pair<double, double>
+    energy_errors(const Function<dim> &exact) const;
+
     /** Global norm of (u_h - exact) of the last step. */
     double
     compute_error(const Function<dim>        &exact,
@@ -184,6 +197,16 @@ namespace amfrac
       Vector pattern_increment;
       double converged_force = 0;
     };
+    /** Adaptivity: the current cycle, the estimate of its last step
+     * (the marking criterion), its zz estimate (reported), the last
+     * history row, the per-cycle summary and the run's clock. */
+    unsigned int                                cycle = 0;
+    typename ErrorEstimator<dim>::Estimate      last_estimate;
+    typename ErrorEstimator<dim>::Estimate      last_zz;
+    std::vector<std::pair<std::string, double>> last_row;
+    std::unique_ptr<History>                    cycle_summary;
+    Timer                                       clock;
+
     std::unique_ptr<NewtonState> newton;
     bool                         solver_ready     = false;
     unsigned int                 n_factorizations = 0;
@@ -198,6 +221,25 @@ namespace amfrac
 
     void
     build_loads_and_supports();
+    void
+    make_probe();
+    /** Refinement cycles of a linear scene (Adaptivity subsection). */
+    void
+    run_adaptive();
+    /** Both estimates of the solution at @p t (ZZ always, Kelly if it
+     * is the chosen estimator), into last_zz and last_estimate. */
+    void
+    estimate_error(const double t);
+    /** Mark by the Adaptivity strategy and refine; false if no cell was
+     * marked. */
+    bool
+    refine_mesh();
+    /** Rebuild everything that depends on the mesh. */
+    void
+    setup_after_refinement();
+    /** One row of adaptivity.csv and its console line. */
+    void
+    report_cycle();
     PatchLoad<dim>
     build_patch_load() const;
     void

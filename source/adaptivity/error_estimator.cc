@@ -1,0 +1,481 @@
+#include <amfrac/adaptivity/error_estimator.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <stdexcept>
+
+namespace amfrac
+{
+  namespace
+  {
+    /** The largest diagonal stiffness entry of all plies (MPa). */
+    template <int dim>
+    double
+    largest_stiffness(const std::vector<PlyProperties<dim>> &plies)
+    {
+      double E = 0;
+      for (const auto &ply : plies)
+        for (unsigned int d = 0; d < dim; ++d)
+          E = std::max(E, ply.stiffness[d][d][d][d]);
+      return E;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  ErrorEstimator<dim>::ErrorEstimator(
+    const TiedCopyDoFs<dim>               &dofs,
+    const std::vector<PlyProperties<dim>> &plies,
+    const FaceFilter                      &released)
+    : dofs(dofs)
+    , plies(plies)
+    , released(released)
+    , comm(dofs.copy_handler().get_triangulation().get_communicator())
+  {
+    for (const auto &ply : plies)
+      compliance.push_back(invert(ply.stiffness));
+  }
+
+
+
+  template <int dim>
+  dealii::Vector<double>
+  ErrorEstimator<dim>::replicate(
+    const TrilinosWrappers::MPI::Vector &owned) const
+  {
+    dealii::Vector<double> local(dofs.n_dofs()), all(dofs.n_dofs());
+    for (const auto i : dofs.locally_owned_dofs())
+      local[i] = owned[i];
+    Utilities::MPI::sum(local, comm, all);
+    return all;
+  }
+
+
+
+  template <int dim>
+  void
+  ErrorEstimator<dim>::cell_stresses(
+    const typename TiedCopyDoFs<dim>::CellIterator &cell,
+    const dealii::Vector<double>                   &u,
+    const FEValuesBase<dim, dim>                   &values,
+    std::vector<SymmetricTensor<2, dim>>           &stress) const
+  {
+    std::vector<types::global_dof_index> indices(
+      dofs.get_fe().n_dofs_per_cell());
+    dofs.get_dof_indices(cell, indices);
+    std::vector<double> local(indices.size());
+    for (unsigned int i = 0; i < indices.size(); ++i)
+      local[i] = u[indices[i]];
+    stress.resize(values.n_quadrature_points);
+    values[FEValuesExtractors::Vector(0)]
+      .get_function_symmetric_gradients_from_local_dof_values(local, stress);
+    const auto &C = plies[cell->material_id()].stiffness;
+    for (auto &s : stress)
+      s = C * s;
+  }
+
+
+
+  template <int dim>
+  typename ErrorEstimator<dim>::Estimate
+  ErrorEstimator<dim>::finish(dealii::Vector<float> &local,
+                              double                 norm_squared) const
+  {
+    Estimate estimate;
+    estimate.cell_errors.reinit(local.size());
+    Utilities::MPI::sum(local, comm, estimate.cell_errors);
+    double sum = 0;
+    for (float &e : estimate.cell_errors)
+      {
+        sum += e;
+        e = std::sqrt(e);
+      }
+    estimate.error         = std::sqrt(sum);
+    estimate.solution_norm = std::sqrt(Utilities::MPI::sum(norm_squared, comm));
+    return estimate;
+  }
+
+
+
+  namespace
+  {
+    /** Monomials of total degree <= @p degree at @p x. */
+    template <int dim>
+    std::vector<double>
+    monomials(const Point<dim> &x, const unsigned int degree)
+    {
+      std::vector<double> values{1.};
+      for (unsigned int d = 0; d < dim; ++d)
+        values.push_back(x[d]);
+      if (degree >= 2)
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = a; b < dim; ++b)
+            values.push_back(x[a] * x[b]);
+      return values;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  std::vector<dealii::Vector<double>>
+  ErrorEstimator<dim>::recover_stress(const TiedCopyDoFs<dim>      &recovery,
+                                      const dealii::Vector<double> &u) const
+  {
+    constexpr unsigned int n_stress
+      = SymmetricTensor<2, dim>::n_independent_components;
+    const auto &triangulation = dofs.copy_handler().get_triangulation();
+    const auto &fe            = dofs.get_fe();
+    const auto  cells_at      = GridTools::vertex_to_cell_map(triangulation);
+
+    // Stresses at the Gauss points of degree p (superconvergent for the
+    // tensor-product elements on regular meshes), cell by cell on demand.
+    FEValues<dim>                                     values(fe,
+                         QGauss<dim>(fe.degree),
+                         update_gradients | update_quadrature_points);
+    std::vector<std::vector<SymmetricTensor<2, dim>>> stress(
+      triangulation.n_active_cells());
+    std::vector<std::vector<Point<dim>>> points(stress.size());
+    const auto                           sample = [&](const auto &tria_cell) {
+      const unsigned int k = tria_cell->active_cell_index();
+      if (stress[k].empty())
+        {
+          const typename DoFHandler<dim>::active_cell_iterator cell(
+            &triangulation,
+            tria_cell->level(),
+            tria_cell->index(),
+            &dofs.copy_handler());
+          values.reinit(cell);
+          cell_stresses(cell, u, values, stress[k]);
+          points[k] = values.get_quadrature_points();
+        }
+    };
+
+    // The patches a rank needs: those of every vertex of a cell that
+    // shares a vertex with an owned cell, so that each node of an owned
+    // cell sees all its patches, summed in vertex order (the same on every
+    // rank).
+    std::vector<bool> needed(triangulation.n_vertices(), false);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          for (const auto &neighbor : cells_at[cell->vertex_index(v)])
+            for (const unsigned int w : neighbor->vertex_indices())
+              needed[neighbor->vertex_index(w)] = true;
+
+    // Sums of the fits at the nodes: [0, n_stress) values and n_stress the
+    // count, from fits of full rank; then the same from rank-deficient
+    // fits (patches at corners, plies one element thick), used only where
+    // no full fit reaches.
+    std::vector<dealii::Vector<double>> sums(
+      2 * (n_stress + 1), dealii::Vector<double>(recovery.n_dofs()));
+    const unsigned int n_nodes = fe.base_element(0).n_dofs_per_cell();
+    std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+    const unsigned int n_terms = monomials(Point<dim>(), fe.degree).size();
+    for (unsigned int v = 0; v < needed.size(); ++v)
+      {
+        if (!needed[v])
+          continue;
+        std::set<types::material_id> plies_here;
+        for (const auto &cell : cells_at[v])
+          plies_here.insert(cell->material_id());
+        for (const auto ply : plies_here)
+          {
+            const Point<dim> &center = triangulation.get_vertices()[v];
+            double            h      = 0;
+            for (const auto &cell : cells_at[v])
+              if (cell->material_id() == ply)
+                {
+                  sample(cell);
+                  h = std::max(h, cell->diameter());
+                }
+            // Normal equations of the least-squares fit in scaled local
+            // coordinates; a pseudo-inverse drops the terms the samples
+            // cannot see (e.g. z^2 in a ply one element thick).
+            LAPACKFullMatrix<double> normal(n_terms, n_terms);
+            FullMatrix<double>       rhs(n_terms, n_stress);
+            for (const auto &cell : cells_at[v])
+              if (cell->material_id() == ply)
+                {
+                  const unsigned int k = cell->active_cell_index();
+                  for (unsigned int q = 0; q < points[k].size(); ++q)
+                    {
+                      const auto p = monomials<dim>(
+                        Point<dim>((points[k][q] - center) / h), fe.degree);
+                      for (unsigned int i = 0; i < n_terms; ++i)
+                        {
+                          for (unsigned int j = 0; j < n_terms; ++j)
+                            normal(i, j) += p[i] * p[j];
+                          for (unsigned int c = 0; c < n_stress; ++c)
+                            rhs(i, c)
+                              += p[i] * stress[k][q].access_raw_entry(c);
+                        }
+                    }
+                }
+            normal.compute_inverse_svd(1e-10);
+            const bool full_rank = normal.singular_value(n_terms - 1)
+                                   > 1e-10 * normal.singular_value(0);
+            const unsigned int set = full_rank ? 0 : n_stress + 1;
+            FullMatrix<double> coefficients(n_terms, n_stress);
+            for (unsigned int c = 0; c < n_stress; ++c)
+              {
+                dealii::Vector<double> b(n_terms), x(n_terms);
+                for (unsigned int i = 0; i < n_terms; ++i)
+                  b[i] = rhs(i, c);
+                normal.vmult(x, b);
+                for (unsigned int i = 0; i < n_terms; ++i)
+                  coefficients(i, c) = x[i];
+              }
+            for (const auto &tria_cell : cells_at[v])
+              if (tria_cell->material_id() == ply)
+                {
+                  const typename DoFHandler<dim>::active_cell_iterator cell(
+                    &triangulation,
+                    tria_cell->level(),
+                    tria_cell->index(),
+                    &recovery.copy_handler());
+                  recovery.get_dof_indices(cell, indices);
+                  for (unsigned int j = 0; j < n_nodes; ++j)
+                    {
+                      const auto key
+                        = indices[fe.component_to_system_index(0, j)];
+                      const auto p = monomials<dim>(
+                        Point<dim>((recovery.support_point(key) - center) / h),
+                        fe.degree);
+                      sums[set + n_stress][key] += 1;
+                      for (unsigned int c = 0; c < n_stress; ++c)
+                        for (unsigned int i = 0; i < n_terms; ++i)
+                          sums[set + c][key] += p[i] * coefficients(i, c);
+                    }
+                }
+          }
+      }
+    const auto &hanging = recovery.hanging_node_constraints();
+    const auto &partial = n_stress + 1;
+    for (unsigned int c = 0; c < n_stress; ++c)
+      {
+        for (types::global_dof_index i = 0; i < sums[c].size(); ++i)
+          if (sums[n_stress][i] > 0)
+            sums[c][i] /= sums[n_stress][i];
+          else if (sums[partial + n_stress][i] > 0)
+            sums[c][i] = sums[partial + c][i] / sums[partial + n_stress][i];
+        hanging.distribute(sums[c]);
+      }
+    sums.resize(n_stress);
+    return sums;
+  }
+
+
+
+  template <int dim>
+  typename ErrorEstimator<dim>::Estimate
+  ErrorEstimator<dim>::zienkiewicz_zhu(const dealii::Vector<double> &u) const
+  {
+    const auto &triangulation = dofs.copy_handler().get_triangulation();
+    const auto &fe            = dofs.get_fe();
+    // Continuous inside a ply, free across plies and released faces.
+    TiedCopyDoFs<dim> recovery(triangulation, fe.degree);
+    recovery.distribute([this](const auto &cell, const unsigned int f) {
+      return !cell->at_boundary(f)
+             && (cell->neighbor(f)->material_id() != cell->material_id()
+                 || (released && released(cell, f)));
+    });
+    const auto recovered = recover_stress(recovery, u);
+
+    constexpr unsigned int n_stress
+      = SymmetricTensor<2, dim>::n_independent_components;
+    const unsigned int n_nodes = fe.base_element(0).n_dofs_per_cell();
+    FEValues<dim>      values(fe,
+                         QGauss<dim>(fe.degree + 1),
+                         update_values | update_gradients | update_JxW_values);
+    std::vector<SymmetricTensor<2, dim>> stress;
+    std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+    dealii::Vector<float>                local(triangulation.n_active_cells());
+    double                               norm_squared = 0;
+    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          values.reinit(cell);
+          cell_stresses(cell, u, values, stress);
+          const typename DoFHandler<dim>::active_cell_iterator same(
+            &triangulation,
+            cell->level(),
+            cell->index(),
+            &recovery.copy_handler());
+          recovery.get_dof_indices(same, indices);
+          const auto &S = compliance[cell->material_id()];
+          double      e = 0;
+          for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
+            {
+              SymmetricTensor<2, dim> smooth;
+              for (unsigned int j = 0; j < n_nodes; ++j)
+                {
+                  const unsigned int k = fe.component_to_system_index(0, j);
+                  const double phi     = values.shape_value_component(k, q, 0);
+                  for (unsigned int c = 0; c < n_stress; ++c)
+                    smooth.access_raw_entry(c)
+                      += phi * recovered[c][indices[k]];
+                }
+              const SymmetricTensor<2, dim> difference = smooth - stress[q];
+              e += difference * (S * difference) * values.JxW(q);
+              norm_squared += stress[q] * (S * stress[q]) * values.JxW(q);
+            }
+          local[cell->active_cell_index()] = e;
+        }
+    return finish(local, norm_squared);
+  }
+
+
+
+  template <int dim>
+  typename ErrorEstimator<dim>::Estimate
+  ErrorEstimator<dim>::kelly(const dealii::Vector<double> &u,
+                             const Boundary               &boundary) const
+  {
+    const auto       &fe    = dofs.get_fe();
+    const UpdateFlags flags = update_gradients | update_normal_vectors
+                              | update_JxW_values | update_quadrature_points;
+    const QGauss<dim - 1> rule(fe.degree + 1);
+    FEFaceValues<dim>     face(fe, rule, flags), other_face(fe, rule, flags);
+    FESubfaceValues<dim>  subface(fe, rule, flags),
+      other_subface(fe, rule, flags);
+    std::vector<SymmetricTensor<2, dim>> mine, theirs;
+
+    // int |(s_mine - s_theirs) n|^2 over one face seen from both sides.
+    const auto jump = [&](const auto                   &cell,
+                          const FEValuesBase<dim, dim> &here,
+                          const auto                   &neighbor,
+                          const FEValuesBase<dim, dim> &there) {
+      cell_stresses(cell, u, here, mine);
+      cell_stresses(neighbor, u, there, theirs);
+      double sum = 0;
+      for (unsigned int q = 0; q < here.n_quadrature_points; ++q)
+        {
+          if (here.quadrature_point(q).distance(there.quadrature_point(q))
+              > 1e-8 * cell->diameter())
+            throw std::logic_error("Kelly estimator: the face quadrature "
+                                   "points of two neighbours differ (a face "
+                                   "orientation the estimator cannot handle)");
+          const Tensor<1, dim> t
+            = (mine[q] - theirs[q]) * here.normal_vector(q);
+          sum += t * t * here.JxW(q);
+        }
+      return sum;
+    };
+    // int |s n - t_applied|^2 over a loaded or free boundary face.
+    const auto residual = [&](const auto &cell, const unsigned int f) {
+      face.reinit(cell, f);
+      cell_stresses(cell, u, face, mine);
+      const auto  id    = cell->face(f)->boundary_id();
+      const auto *loads = boundary.loads;
+      double      sum   = 0;
+      for (unsigned int q = 0; q < face.n_quadrature_points; ++q)
+        {
+          const Point<dim> &x = face.quadrature_point(q);
+          Tensor<1, dim>    t = mine[q] * face.normal_vector(q);
+          if (loads && loads->tractions.count(id))
+            {
+              loads->tractions.at(id)->set_time(boundary.time);
+              for (unsigned int d = 0; d < dim; ++d)
+                t[d] -= loads->tractions.at(id)->value(x, d);
+            }
+          if (loads && loads->pressures.count(id))
+            {
+              loads->pressures.at(id)->set_time(boundary.time);
+              t += loads->pressures.at(id)->value(x) * face.normal_vector(q);
+            }
+          sum += t * t * face.JxW(q);
+        }
+      return sum;
+    };
+    std::set<types::boundary_id> patch_faces;
+    if (boundary.loads)
+      for (const auto &patch : boundary.loads->patches)
+        patch_faces.insert(patch.boundary_id);
+
+    const double          scale = 1. / (24. * largest_stiffness(plies));
+    dealii::Vector<float> local(
+      dofs.copy_handler().get_triangulation().n_active_cells());
+    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          double sum = 0;
+          for (const unsigned int f : cell->face_indices())
+            if (cell->at_boundary(f))
+              {
+                const auto id = cell->face(f)->boundary_id();
+                if (!boundary.supported.count(id) && !patch_faces.count(id))
+                  sum += residual(cell, f);
+              }
+            else if (released && released(cell, f))
+              continue;
+            else if (cell->face(f)->has_children())
+              for (unsigned int s = 0; s < cell->face(f)->n_children(); ++s)
+                {
+                  const auto child = cell->neighbor_child_on_subface(f, s);
+                  subface.reinit(cell, f, s);
+                  other_face.reinit(child, cell->neighbor_of_neighbor(f));
+                  sum += jump(cell, subface, child, other_face);
+                }
+            else if (cell->neighbor_is_coarser(f))
+              {
+                const auto neighbor = cell->neighbor(f);
+                const auto [nf, ns] = cell->neighbor_of_coarser_neighbor(f);
+                face.reinit(cell, f);
+                other_subface.reinit(neighbor, nf, ns);
+                sum += jump(cell, face, neighbor, other_subface);
+              }
+            else
+              {
+                const auto neighbor = cell->neighbor(f);
+                face.reinit(cell, f);
+                other_face.reinit(neighbor, cell->neighbor_of_neighbor(f));
+                sum += jump(cell, face, neighbor, other_face);
+              }
+          local[cell->active_cell_index()] = scale * cell->diameter() * sum;
+        }
+    return finish(local, 0.);
+  }
+
+
+
+  template <int dim>
+  double
+  ErrorEstimator<dim>::energy_error(const dealii::Vector<double> &u,
+                                    const Function<dim>          &exact) const
+  {
+    const auto                          &fe = dofs.get_fe();
+    FEValues<dim>                        values(fe,
+                         QGauss<dim>(fe.degree + 2),
+                         update_gradients | update_JxW_values
+                           | update_quadrature_points);
+    std::vector<SymmetricTensor<2, dim>> stress;
+    std::vector<Tensor<1, dim>>          gradients(dim);
+    double                               sum = 0;
+    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          values.reinit(cell);
+          cell_stresses(cell, u, values, stress);
+          const auto &C = plies[cell->material_id()].stiffness;
+          const auto &S = compliance[cell->material_id()];
+          for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
+            {
+              Tensor<2, dim> grad;
+              for (unsigned int d = 0; d < dim; ++d)
+                grad[d] = exact.gradient(values.quadrature_point(q), d);
+              const SymmetricTensor<2, dim> error
+                = stress[q] - C * symmetrize(grad);
+              sum += error * (S * error) * values.JxW(q);
+            }
+        }
+    return std::sqrt(Utilities::MPI::sum(sum, comm));
+  }
+
+  template class ErrorEstimator<2>;
+  template class ErrorEstimator<3>;
+} // namespace amfrac

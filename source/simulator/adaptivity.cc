@@ -1,0 +1,219 @@
+#include <amfrac/simulator/simulator.h>
+#include <deal.II/base/convergence_table.h>
+#include <deal.II/grid/grid_refinement.h>
+#include <set>
+
+namespace amfrac
+{
+  template <int dim>
+  void
+  Simulator<dim>::run_adaptive()
+  {
+    const auto &adaptivity = parameters.adaptivity;
+    cycle_summary
+      = std::make_unique<History>(parameters.output.directory
+                                    + "/adaptivity.csv",
+                                  Utilities::MPI::this_mpi_process(comm) == 0);
+    ConvergenceTable table;
+    for (cycle = 0; cycle <= adaptivity.cycles; ++cycle)
+      {
+        if (cycle > 0)
+          {
+            {
+              TimerOutput::Scope scope(timer, "refine");
+              if (!refine_mesh())
+                break;
+            }
+            setup_after_refinement();
+          }
+        run_linear();
+        report_cycle();
+        table.add_value("cycle", cycle);
+        table.add_value("cells", triangulation.n_global_active_cells());
+        table.add_value("unknowns", dof_layer.n_dofs());
+        table.add_value("zz_error", last_zz.error);
+        table.add_value("zz_relative", last_zz.relative());
+        if (adaptivity.strategy
+              == parameters::Adaptivity::Strategy::error_target
+            && last_zz.relative() <= adaptivity.target_error)
+          break;
+      }
+    cycle = std::min(cycle, adaptivity.cycles);
+    table.set_scientific("zz_error", true);
+    table.set_scientific("zz_relative", true);
+    table.evaluate_convergence_rates("zz_error",
+                                     "unknowns",
+                                     ConvergenceTable::reduction_rate_log2,
+                                     dim);
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      table.write_text(std::cout);
+    timer.print_wall_time_statistics(comm);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::estimate_error(const double t)
+  {
+    TimerOutput::Scope        scope(timer, "estimate error");
+    const ErrorEstimator<dim> estimator(
+      dof_layer,
+      plies,
+      interfaces ? interfaces->released_faces() :
+                   typename TiedCopyDoFs<dim>::FaceFilter());
+    const auto displacement = estimator.replicate(relevant_solution);
+    last_zz                 = estimator.zienkiewicz_zhu(displacement);
+    if (parameters.adaptivity.estimator
+        == parameters::Adaptivity::Estimator::kelly)
+      {
+        typename ErrorEstimator<dim>::Boundary boundary;
+        for (const auto &condition : prescribed)
+          boundary.supported.insert(condition.boundary_id);
+        boundary.loads              = &loads;
+        boundary.time               = t;
+        last_estimate               = estimator.kelly(displacement, boundary);
+        last_estimate.solution_norm = last_zz.solution_norm;
+      }
+    else
+      last_estimate = last_zz;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::report_cycle()
+  {
+    std::vector<std::pair<std::string, double>> row
+      = {{"cycle", cycle},
+         {"cells", triangulation.n_global_active_cells()},
+         {"unknowns", dof_layer.n_dofs()},
+         {"wall_seconds", clock.wall_time()},
+         {"estimate", last_estimate.error},
+         {"zz_error", last_zz.error},
+         {"zz_relative_error", last_zz.relative()},
+         {"energy_norm", last_zz.solution_norm}};
+    for (const auto &entry : last_row)
+      if (entry.first != "step")
+        row.push_back(entry);
+    cycle_summary->add_row(row);
+    pcout << "  cycle " << cycle << ": "
+          << triangulation.n_global_active_cells() << " cells, "
+          << dof_layer.n_dofs() << " unknowns, ZZ error " << last_zz.error
+          << " (relative " << last_zz.relative() << ")";
+    if (parameters.adaptivity.estimator
+        == parameters::Adaptivity::Estimator::kelly)
+      pcout << ", Kelly " << last_estimate.error;
+    pcout << std::endl;
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::refine_mesh()
+  {
+    using Strategy         = parameters::Adaptivity::Strategy;
+    const auto &adaptivity = parameters.adaptivity;
+    const auto &errors     = last_estimate.cell_errors;
+    switch (adaptivity.strategy)
+      {
+        case Strategy::uniform:
+          for (const auto &cell : triangulation.active_cell_iterators())
+            cell->set_refine_flag();
+          break;
+        case Strategy::fixed_fraction:
+          GridRefinement::refine_and_coarsen_fixed_fraction(
+            triangulation,
+            errors,
+            adaptivity.refine_fraction,
+            adaptivity.coarsen_fraction);
+          break;
+        case Strategy::fixed_number:
+          GridRefinement::refine_and_coarsen_fixed_number(
+            triangulation,
+            errors,
+            adaptivity.refine_fraction,
+            adaptivity.coarsen_fraction);
+          break;
+          case Strategy::error_target: {
+            // Equidistribution: relative error <= target means
+            // ||e||^2 <= target^2 ||u||^2 / (1 - target^2); each cell may
+            // hold its equal share of that.
+            const double target = adaptivity.target_error;
+            const double allowed
+              = target * target * last_zz.solution_norm * last_zz.solution_norm
+                / (1 - target * target) / triangulation.n_global_active_cells();
+            for (const auto &cell : triangulation.active_cell_iterators())
+              if (std::pow(errors[cell->active_cell_index()], 2) > allowed)
+                cell->set_refine_flag();
+            break;
+          }
+      }
+    // Every rank flags the same cells (the indicators are summed over the
+    // ranks), as the shared triangulation requires.
+    bool any = false;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      {
+        if (cell->refine_flag_set()
+            && cell->level() >= static_cast<int>(adaptivity.max_level))
+          cell->clear_refine_flag();
+        if (cell->coarsen_flag_set()
+            && cell->level()
+                 <= static_cast<int>(parameters.geometry.global_refinements))
+          cell->clear_coarsen_flag();
+        any = any || cell->refine_flag_set() || cell->coarsen_flag_set();
+      }
+    if (!any)
+      {
+        pcout << "  no cell left to refine (Maximum refinement level "
+              << adaptivity.max_level << "): the cycles stop" << std::endl;
+        return false;
+      }
+    triangulation.execute_coarsening_and_refinement();
+    return true;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::setup_after_refinement()
+  {
+    TimerOutput::Scope scope(timer, "setup");
+    dof_layer.distribute(interfaces ? interfaces->released_faces() :
+                                      typename TiedCopyDoFs<dim>::FaceFilter());
+    lever.collect(dof_layer);
+    dof_layer.add_relevant_dofs(lever.all_dofs());
+    for (auto &patch : loads.patches)
+      {
+        patch.unit_nodal_forces.clear();
+        assembler.prepare_patch(patch);
+      }
+    collect_supports();
+    make_probe();
+    if (field_output)
+      field_output->clear_cell_fields();
+    system_matrix.clear();
+  }
+
+
+
+  template <int dim>
+  std::pair<double, double>
+  Simulator<dim>::energy_errors(const Function<dim> &exact) const
+  {
+    const ErrorEstimator<dim> estimator(
+      dof_layer,
+      plies,
+      interfaces ? interfaces->released_faces() :
+                   typename TiedCopyDoFs<dim>::FaceFilter());
+    const auto displacement = estimator.replicate(relevant_solution);
+    return {estimator.zienkiewicz_zhu(displacement).error,
+            estimator.energy_error(displacement, exact)};
+  }
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace amfrac

@@ -1,0 +1,283 @@
+// Error estimation and the refinement cycle.
+//
+// effectivity: the manufactured solution (tests/app/manufactured.h) on
+//   uniform meshes; the ZZ estimate against the true energy error. The
+//   effectivity index theta = ||e*|| / ||e|| must be within 0.9..1.1 on
+//   the finest Q1 and Q2 meshes and move towards 1.
+// peel: prm/adaptive_peel_2d.prm (a [0/90]s strip held on half of its
+//   bottom face, singular where the hold ends) refined uniformly, by ZZ
+//   and by Kelly. The true
+//   energy error comes from the load work: ||u - u_h||_E^2 = W - W_h for a
+//   load-driven scene with zero supports, W from a fine adaptive Q2 run.
+//   Uniform refinement converges at a reduced rate; the adaptive cycles
+//   must reach >= 0.9 of the optimal N^(-p/d) and the same error with
+//   fewer unknowns.
+#include "../check.h"
+#include "manufactured.h"
+
+#include <amfrac/parameters/parameters.h>
+#include <amfrac/simulator/simulator.h>
+#include <deal.II/base/convergence_table.h>
+#include <deal.II/base/mpi.h>
+#include <fstream>
+#include <sstream>
+
+using namespace amfrac;
+
+namespace
+{
+  const char *cube = R"(
+set Dimension = 3
+subsection Geometry
+  set Stacking sequence     = [30]
+  set Total thickness       = 1
+  set Length                = 1
+  set Width                 = 1
+  set Elements along length = @N@
+  set Elements along width  = @N@
+  set Elements per ply      = @N@
+end
+subsection Discretization
+  set Finite element degree = @DEGREE@
+end
+subsection Output
+  set Field format = none
+  set Directory    = adaptivity_effectivity
+end
+)";
+
+  void
+  effectivity(const bool root)
+  {
+    for (const unsigned int degree : {1u, 2u})
+      {
+        ConvergenceTable          table;
+        std::vector<double>       theta;
+        std::vector<unsigned int> meshes
+          = degree == 1 ? std::vector<unsigned int>{4, 8, 16} :
+                          std::vector<unsigned int>{2, 4, 8};
+        for (const unsigned int n : meshes)
+          {
+            const auto prm
+              = parameters::Parameters::from_string(amfrac_test::substitute(
+                amfrac_test::substitute(cube, "@N@", std::to_string(n)),
+                "@DEGREE@",
+                std::to_string(degree)));
+            const Laminate laminate(prm.geometry, prm.materials);
+            const auto     plies = make_ply_table<3>(laminate, prm.materials);
+            auto           exact = std::make_shared<amfrac_test::Exact>();
+            Simulator<3>   simulator(prm, MPI_COMM_WORLD);
+            simulator.set_body_force(
+              std::make_shared<amfrac_test::BodyForce>(plies[0].stiffness_3d));
+            std::vector<PrescribedDisplacement<3>> supports;
+            for (types::boundary_id id = 0; id < 6; ++id)
+              supports.push_back({"face" + std::to_string(id),
+                                  id,
+                                  exact,
+                                  {{true, true, true}},
+                                  nullptr});
+            simulator.set_prescribed_displacements(supports);
+            simulator.run();
+            const auto [estimate, error] = simulator.energy_errors(*exact);
+            theta.push_back(estimate / error);
+            table.add_value("cells", n * n * n);
+            table.add_value("dofs", simulator.dofs().n_dofs());
+            table.add_value("zz", estimate);
+            table.add_value("true", error);
+            table.add_value("theta", theta.back());
+          }
+        table.set_scientific("zz", true);
+        table.set_scientific("true", true);
+        table.evaluate_convergence_rates("true",
+                                         ConvergenceTable::reduction_rate_log2);
+        if (root)
+          {
+            std::cout << "Q" << degree << std::endl;
+            table.write_text(std::cout);
+          }
+        // SPR: asymptotically exact for Q1 and Q2 on this smooth problem
+        // (the coarsest Q2 mesh has no interior vertex: no full patch).
+        amfrac_test::check(std::abs(theta.back() - 1) <= 0.1,
+                           "effectivity on the finest mesh within 0.9..1.1",
+                           __FILE__,
+                           __LINE__);
+        amfrac_test::check(std::abs(theta.back() - 1)
+                             < std::abs(theta[theta.size() - 2] - 1),
+                           "effectivity tends to 1",
+                           __FILE__,
+                           __LINE__);
+      }
+  }
+
+
+
+  struct Run
+  {
+    std::vector<double> unknowns;
+    std::vector<double> work;
+    std::vector<double> zz;
+  };
+
+  /** Every cycle of the peel scene with @p settings appended to its
+   * Adaptivity subsection. */
+  Run
+  peel(const std::string &scene_file,
+       const std::string &degree,
+       const std::string &settings)
+  {
+    std::ifstream      in(scene_file);
+    std::ostringstream text;
+    text << in.rdbuf() << "\nsubsection Discretization\n  set Finite element "
+         << "degree = " << degree << "\nend\nsubsection Adaptivity\n"
+         << settings << "\nend\nsubsection Output\n  set Field format = "
+         << "none\n  set Directory = adaptivity_peel\nend\n";
+    const auto   prm = parameters::Parameters::from_string(text.str());
+    Simulator<2> simulator(prm, MPI_COMM_WORLD);
+    simulator.run();
+    (void)simulator;
+    Run           run;
+    std::ifstream csv("adaptivity_peel/adaptivity.csv");
+    std::string   line, header;
+    std::getline(csv, header);
+    const auto column = [&](const std::string &name) {
+      std::istringstream names(header);
+      std::string        cell;
+      for (unsigned int k = 0; std::getline(names, cell, ','); ++k)
+        if (cell == name)
+          return k;
+      throw std::runtime_error("no column " + name);
+    };
+    const unsigned int c_unknowns = column("unknowns"),
+                       c_work = column("load_work"), c_zz = column("zz_error");
+    while (std::getline(csv, line))
+      {
+        std::istringstream  cells(line);
+        std::string         cell;
+        std::vector<double> row;
+        while (std::getline(cells, cell, ','))
+          row.push_back(std::stod(cell));
+        run.unknowns.push_back(row[c_unknowns]);
+        run.work.push_back(row[c_work]);
+        run.zz.push_back(row[c_zz]);
+      }
+    return run;
+  }
+
+  /** Least-squares slope of log(error) against log(unknowns) over the
+   * last @p n points. */
+  double
+  rate(const std::vector<double> &unknowns,
+       const std::vector<double> &error,
+       const unsigned int         n)
+  {
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (std::size_t i = error.size() - n; i < error.size(); ++i)
+      {
+        const double x = std::log(unknowns[i]), y = std::log(error[i]);
+        sx += x, sy += y, sxx += x * x, sxy += x * y;
+      }
+    return -(n * sxy - sx * sy) / (n * sxx - sx * sx);
+  }
+
+  void
+  singular(const std::string &scene_file, const bool root)
+  {
+    const Run    reference = peel(scene_file,
+                               "2",
+                               "set Refinement cycles = 9\n"
+                                  "set Refine fraction = 0.6");
+    const double W         = reference.work.back();
+    struct Case
+    {
+      const char *name;
+      const char *settings;
+    };
+    const Case cases[]
+      = {{"uniform", "set Refinement cycles = 4\nset Strategy = uniform"},
+         {"zz", "set Refinement cycles = 8\nset Refine fraction = 0.5"},
+         {"kelly",
+          "set Refinement cycles = 8\nset Refine fraction = 0.5\n"
+          "set Estimator = kelly"}};
+    std::vector<double> rates, finest_error, finest_unknowns;
+    std::vector<Run>    runs;
+    for (const auto &c : cases)
+      {
+        const Run           run = peel(scene_file, "1", c.settings);
+        std::vector<double> error;
+        for (const double w : run.work)
+          error.push_back(std::sqrt(std::max(W - w, 0.)));
+        rates.push_back(rate(run.unknowns, error, 3));
+        // On uniform meshes the singularity dominates and ZZ underestimates
+        // (0.90 on the last one); on the adapted meshes it is resolved.
+        if (std::string(c.name) != "uniform")
+          amfrac_test::check(std::abs(run.zz.back() / error.back() - 1) <= 0.1,
+                             std::string(c.name)
+                               + ": ZZ effectivity on the last mesh within "
+                                 "0.9..1.1 (four plies, singular)",
+                             __FILE__,
+                             __LINE__);
+        runs.push_back(run);
+        runs.back().work = error;
+        finest_error.push_back(error.back());
+        finest_unknowns.push_back(run.unknowns.back());
+        if (root)
+          {
+            std::cout << c.name << ": rate " << rates.back() << std::endl;
+            for (std::size_t i = 0; i < error.size(); ++i)
+              std::cout << "  " << run.unknowns[i] << " unknowns, error "
+                        << error[i] << ", zz " << run.zz[i] << ", theta "
+                        << run.zz[i] / error[i] << std::endl;
+          }
+      }
+    // The unknowns an adaptive run needs for the error of the finest
+    // uniform mesh (first cycle at or below it).
+    for (unsigned int k = 1; k < 3; ++k)
+      {
+        double needed = 0;
+        for (std::size_t i = 0; i < runs[k].work.size() && needed == 0; ++i)
+          if (runs[k].work[i] <= finest_error[0])
+            needed = runs[k].unknowns[i];
+        if (root)
+          std::cout << cases[k].name << " reaches the finest uniform error "
+                    << finest_error[0] << " with " << needed << " unknowns ("
+                    << finest_unknowns[0] << " uniform)" << std::endl;
+        amfrac_test::check(needed > 0 && 4 * needed <= finest_unknowns[0],
+                           "adaptive: the finest uniform error with 4x fewer "
+                           "unknowns",
+                           __FILE__,
+                           __LINE__);
+      }
+    // Optimal for Q1 in 2D: N^(-1/2).
+    amfrac_test::check(rates[0] < 0.4,
+                       "uniform refinement converges at a reduced rate",
+                       __FILE__,
+                       __LINE__);
+    amfrac_test::check(rates[1] >= 0.9 * 0.5,
+                       "ZZ refinement reaches 0.9 of N^(-1/2)",
+                       __FILE__,
+                       __LINE__);
+    amfrac_test::check(rates[2] >= 0.9 * 0.5,
+                       "Kelly refinement reaches 0.9 of N^(-1/2)",
+                       __FILE__,
+                       __LINE__);
+  }
+} // namespace
+
+int
+main(int argc, char *argv[])
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const std::string mode = argc > 1 ? argv[1] : "";
+  if (mode == "effectivity")
+    effectivity(root);
+  else if (mode == "peel" && argc > 2)
+    singular(argv[2], root);
+  else
+    {
+      std::cerr << "usage: app_adaptivity effectivity | peel SCENE.prm"
+                << std::endl;
+      return 2;
+    }
+  return amfrac_test::summary();
+}
