@@ -5,6 +5,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/lapack_full_matrix.h>
+#include <limits>
 #include <stdexcept>
 
 namespace amfrac
@@ -346,22 +347,36 @@ namespace amfrac
     std::vector<SymmetricTensor<2, dim>> mine, theirs;
 
     // int |(s_mine - s_theirs) n|^2 over one face seen from both sides.
+    // The two sides' quadrature points are paired by position, not by
+    // index: the face orientations of a neighbour may differ (extruded and
+    // curved meshes), and a fine face next to a coarse one on a curved
+    // manifold sits slightly off the coarse subface.
     const auto jump = [&](const auto                   &cell,
                           const FEValuesBase<dim, dim> &here,
                           const auto                   &neighbor,
                           const FEValuesBase<dim, dim> &there) {
       cell_stresses(cell, u, here, mine);
       cell_stresses(neighbor, u, there, theirs);
+      const unsigned int n       = here.n_quadrature_points;
+      double             spacing = std::numeric_limits<double>::max();
+      for (unsigned int q = 1; q < n; ++q)
+        spacing = std::min(
+          spacing, here.quadrature_point(0).distance(here.quadrature_point(q)));
       double sum = 0;
-      for (unsigned int q = 0; q < here.n_quadrature_points; ++q)
+      for (unsigned int q = 0; q < n; ++q)
         {
-          if (here.quadrature_point(q).distance(there.quadrature_point(q))
-              > 1e-8 * cell->diameter())
+          unsigned int match = 0;
+          for (unsigned int r = 1; r < n; ++r)
+            if (here.quadrature_point(q).distance(there.quadrature_point(r))
+                < here.quadrature_point(q).distance(
+                  there.quadrature_point(match)))
+              match = r;
+          if (here.quadrature_point(q).distance(there.quadrature_point(match))
+              > 0.25 * spacing)
             throw std::logic_error("Kelly estimator: the face quadrature "
-                                   "points of two neighbours differ (a face "
-                                   "orientation the estimator cannot handle)");
+                                   "points of two neighbours do not pair up");
           const Tensor<1, dim> t
-            = (mine[q] - theirs[q]) * here.normal_vector(q);
+            = (mine[q] - theirs[match]) * here.normal_vector(q);
           sum += t * t * here.JxW(q);
         }
       return sum;

@@ -4,6 +4,8 @@
 #include <amfrac/parameters/input_error.h>
 #include <cmath>
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/manifold_lib.h>
+#include <map>
 #include <random>
 
 namespace amfrac
@@ -99,8 +101,11 @@ namespace amfrac
     if (dim == 3)
       box[1] = geometry.width;
     box[dim - 1] = laminate.thickness();
-    GridGenerator::subdivided_hyper_rectangle(
-      triangulation, steps, Point<dim>(), box, /*colorize=*/true);
+    if (geometry.hole_radius > 0)
+      make_open_hole_mesh(geometry, laminate, triangulation);
+    else
+      GridGenerator::subdivided_hyper_rectangle(
+        triangulation, steps, Point<dim>(), box, /*colorize=*/true);
 
     for (const auto &cell : triangulation.active_cell_iterators())
       {
@@ -142,6 +147,120 @@ namespace amfrac
           }
       }
   }
+
+  namespace
+  {
+    /** Thickness coordinates of the element layers: Elements per ply
+     * equal layers in every ply. */
+    std::vector<double>
+    layer_coordinates(const parameters::Geometry &geometry,
+                      const Laminate             &laminate)
+    {
+      std::vector<double> z{0.};
+      for (unsigned int p = 0; p < laminate.n_plies(); ++p)
+        for (unsigned int k = 1; k <= geometry.elements_per_ply; ++k)
+          z.push_back(
+            laminate.ply_boundaries[p]
+            + (laminate.ply_boundaries[p + 1] - laminate.ply_boundaries[p]) * k
+                / geometry.elements_per_ply);
+      return z;
+    }
+
+    /** The in-plane mesh of an open-hole plate: deal.II's plate with a
+     * hole (whose inner square has 2 cells across), refined on its
+     * manifolds until about Elements along width cells span the width,
+     * then flattened into a coarse mesh that can be extruded. */
+    void
+    make_hole_plate_2d(const parameters::Geometry &geometry,
+                       Triangulation<2>           &flat)
+    {
+      const double     L = geometry.length, W = geometry.width;
+      const double     outer = 0.5 * std::min(L, W);
+      const Point<2>   center(0.5 * L, 0.5 * W);
+      Triangulation<2> plate;
+      GridGenerator::plate_with_a_hole(plate,
+                                       geometry.hole_radius,
+                                       outer,
+                                       0.5 * W - outer,
+                                       0.5 * W - outer,
+                                       0.5 * L - outer,
+                                       0.5 * L - outer,
+                                       center,
+                                       0,
+                                       1,
+                                       1.,
+                                       2,
+                                       /*colorize=*/true);
+      TransfiniteInterpolationManifold<2> tfi;
+      tfi.initialize(plate);
+      plate.set_manifold(1, tfi);
+      const double cells_across = 2. * W / (2. * outer);
+      const int    refinements
+        = std::max(0,
+                   static_cast<int>(std::lround(
+                     std::log2(geometry.elements_along_width / cells_across))));
+      plate.refine_global(refinements);
+      GridGenerator::flatten_triangulation(plate, flat);
+    }
+  } // namespace
+
+
+
+  template <>
+  void
+  make_open_hole_mesh(const parameters::Geometry &geometry,
+                      const Laminate             &laminate,
+                      Triangulation<3>           &triangulation)
+  {
+    Triangulation<2> flat;
+    make_hole_plate_2d(geometry, flat);
+    GridGenerator::extrude_triangulation(flat,
+                                         layer_coordinates(geometry, laminate),
+                                         triangulation);
+    // Extrusion keeps the 2D ids on the side walls (4: the hole) and gives
+    // the bottom and top 5 and 6; amfrac's are z- = 4, z+ = 5, hole = 6.
+    const std::map<types::boundary_id, types::boundary_id> renumber{{4, 6},
+                                                                    {5, 4},
+                                                                    {6, 5}};
+    const Point<3> center(0.5 * geometry.length, 0.5 * geometry.width, 0);
+    const double   box = 0.5 * std::min(geometry.length, geometry.width);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      {
+        const Point<3> c = cell->center();
+        if (std::abs(c[0] - center[0]) < box
+            && std::abs(c[1] - center[1]) < box)
+          cell->set_all_manifold_ids(1);
+      }
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          {
+            const auto id = cell->face(f)->boundary_id();
+            if (renumber.count(id))
+              cell->face(f)->set_boundary_id(renumber.at(id));
+            if (cell->face(f)->boundary_id() == 6)
+              cell->face(f)->set_all_manifold_ids(0);
+          }
+    triangulation.set_manifold(
+      0, CylindricalManifold<3>(Tensor<1, 3>({0., 0., 1.}), center));
+    TransfiniteInterpolationManifold<3> tfi;
+    tfi.initialize(triangulation);
+    triangulation.set_manifold(1, tfi);
+  }
+
+
+
+  template <>
+  void
+  make_open_hole_mesh(const parameters::Geometry &,
+                      const Laminate &,
+                      Triangulation<2> &)
+  {
+    throw InputError("Geometry/Hole radius",
+                     "an open hole needs Dimension = 3");
+  }
+
+
 
   template void
   make_laminate_mesh<2>(const parameters::Geometry &,

@@ -67,7 +67,22 @@ namespace amfrac
             "expects one expression or " + std::to_string(n_components)
               + " separated by ';', got " + std::to_string(expressions.size()));
     for (const auto &e : all)
-      require(!e.empty(), parameter, "an expression is empty");
+      {
+        require(!e.empty(), parameter, "an expression is empty");
+        // muparser would read "a, b" as a list and keep one of them:
+        // components are separated by ';', commas only separate function
+        // arguments.
+        int depth = 0;
+        for (const char c : e)
+          {
+            depth += c == '(' ? 1 : c == ')' ? -1 : 0;
+            require(c != ',' || depth > 0,
+                    parameter,
+                    "'" + e
+                      + "' has a comma outside parentheses: separate the "
+                        "components with ';'");
+          }
+      }
 
     auto function = std::make_shared<FunctionParser<dim>>(n_components);
     try

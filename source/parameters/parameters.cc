@@ -77,6 +77,17 @@ namespace amfrac
                         "Random interior-vertex perturbation as a fraction "
                         "of the element size (for patch tests); ply "
                         "interfaces stay planar.");
+      prm.declare_entry("Hole radius",
+                        "0",
+                        Patterns::Double(0),
+                        "If positive, a circular hole through the thickness "
+                        "at the centre of the plate [mm] (3D only): an open-"
+                        "hole laminate. The in-plane mesh is then deal.II's "
+                        "plate with a hole (the hole on a cylindrical "
+                        "manifold, transfinite interpolation around it), "
+                        "refined until about Elements along width cells "
+                        "span the width; Elements along length is not used. "
+                        "The hole's boundary id is 6 (traction free).");
       prm.declare_entry("Refinement region",
                         "",
                         Patterns::Anything(),
@@ -107,12 +118,19 @@ namespace amfrac
       elements_per_ply      = prm.get_integer("Elements per ply");
       global_refinements    = prm.get_integer("Global refinements");
       mesh_distortion       = prm.get_double("Mesh distortion");
+      hole_radius           = prm.get_double("Hole radius");
       refinement_region     = Utilities::trim(prm.get("Refinement region"));
       region_refinements    = prm.get_integer("Region refinements");
       prm.leave_subsection();
 
       require(length > 0, "Geometry/Length", "must be positive");
       require(width > 0, "Geometry/Width", "must be positive");
+      require(hole_radius < 0.45 * std::min(length, width),
+              "Geometry/Hole radius",
+              "must be below 0.45 times the smaller of Length and Width");
+      require(hole_radius == 0 || mesh_distortion == 0,
+              "Geometry/Mesh distortion",
+              "is for the box mesh: set it to 0 with a Hole radius");
       try
         {
           plies = parse_stacking_sequence(stacking_sequence);
@@ -1289,6 +1307,9 @@ namespace amfrac
     {
       dimension = prm.get_integer("Dimension");
       geometry.parse_parameters(prm);
+      if (dimension == 2 && geometry.hole_radius > 0)
+        throw InputError("Geometry/Hole radius",
+                         "an open hole needs Dimension = 3");
       materials.parse_parameters(prm);
       for (const Ply &ply : geometry.plies)
         materials.index_of(ply.material);

@@ -279,6 +279,14 @@ subsection Boundary conditions
   end
 end"
 
+expect comma_components "Boundary conditions/x+/Traction" "$base
+subsection Boundary conditions
+  subsection x+
+    set Type = traction
+    set Traction = 1, 0, 0
+  end
+end"
+expect hole_too_large "Geometry/Hole radius" "$(with 'set Elements along width = 2' 'set Hole radius = 5')"
 expect adaptivity_target_kelly "Adaptivity/Strategy" "$base
 subsection Adaptivity
   set Refinement cycles = 2

@@ -42,6 +42,15 @@ namespace amfrac
    * every cell is its ply index, boundary ids 0..2*dim-1 are the faces
    * x-, x+, y-, y+, (z-, z+).
    */
+  /** The same for Geometry/Hole radius > 0 (3D): the plate with a
+   * hole, extruded ply by ply; boundary id 6 is the hole. The refinement
+   * of make_laminate_mesh follows the hole's cylindrical manifold. */
+  template <int dim>
+  void
+  make_open_hole_mesh(const parameters::Geometry &geometry,
+                      const Laminate             &laminate,
+                      Triangulation<dim>         &triangulation);
+
   template <int dim>
   void
   make_laminate_mesh(const parameters::Geometry &geometry,

@@ -29,8 +29,10 @@ namespace amfrac
       unsigned int        elements_per_ply;
       unsigned int        global_refinements;
       double              mesh_distortion;
-      std::string         refinement_region;
-      unsigned int        region_refinements;
+      /** A through-thickness hole at the plate centre (0: none; 3D). */
+      double       hole_radius;
+      std::string  refinement_region;
+      unsigned int region_refinements;
 
       static void
       declare_parameters(ParameterHandler &prm);
