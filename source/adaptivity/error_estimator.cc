@@ -133,26 +133,45 @@ namespace amfrac
     const auto &fe            = dofs.get_fe();
     const auto  cells_at      = GridTools::vertex_to_cell_map(triangulation);
 
-    // Stresses at the Gauss points of degree p (superconvergent for the
-    // tensor-product elements on regular meshes), cell by cell on demand.
-    FEValues<dim>                                     values(fe,
-                         QGauss<dim>(fe.degree),
-                         update_gradients | update_quadrature_points);
-    std::vector<std::vector<SymmetricTensor<2, dim>>> stress(
-      triangulation.n_active_cells());
-    std::vector<std::vector<Point<dim>>> points(stress.size());
-    const auto                           sample = [&](const auto &tria_cell) {
+    // Stresses at sample points, cell by cell on demand: the Gauss points
+    // of degree p (superconvergent on regular meshes), and the same with
+    // p + 1 points through the thickness for patches that cannot see the
+    // thickness variation otherwise (a ply one element thick has its
+    // superconvergent points at one (Q1) or two (Q2) heights only).
+    struct Samples
+    {
+      FEValues<dim>                                     values;
+      std::vector<std::vector<SymmetricTensor<2, dim>>> stress;
+      std::vector<std::vector<Point<dim>>>              points;
+    };
+    const QGauss<1> through(fe.degree + 1);
+    const auto      flags = update_gradients | update_quadrature_points;
+    Samples superconvergent{FEValues<dim>(fe, QGauss<dim>(fe.degree), flags),
+                            {},
+                            {}};
+    Samples thickness{FEValues<dim>(fe,
+                                    Quadrature<dim>(QGauss<dim - 1>(fe.degree),
+                                                    through),
+                                    flags),
+                      {},
+                      {}};
+    for (Samples *samples : {&superconvergent, &thickness})
+      {
+        samples->stress.resize(triangulation.n_active_cells());
+        samples->points.resize(triangulation.n_active_cells());
+      }
+    const auto sample = [&](Samples &samples, const auto &tria_cell) {
       const unsigned int k = tria_cell->active_cell_index();
-      if (stress[k].empty())
+      if (samples.stress[k].empty())
         {
           const typename DoFHandler<dim>::active_cell_iterator cell(
             &triangulation,
             tria_cell->level(),
             tria_cell->index(),
             &dofs.copy_handler());
-          values.reinit(cell);
-          cell_stresses(cell, u, values, stress[k]);
-          points[k] = values.get_quadrature_points();
+          samples.values.reinit(cell);
+          cell_stresses(cell, u, samples.values, samples.stress[k]);
+          samples.points[k] = samples.values.get_quadrature_points();
         }
     };
 
@@ -177,6 +196,50 @@ namespace amfrac
     const unsigned int n_nodes = fe.base_element(0).n_dofs_per_cell();
     std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
     const unsigned int n_terms = monomials(Point<dim>(), fe.degree).size();
+    // Least-squares fit of the patch (v, ply) through @p samples in scaled
+    // local coordinates (normal equations; a pseudo-inverse drops what the
+    // samples cannot see); true if the fit has full rank.
+    const auto fit = [&](Samples                 &samples,
+                         const unsigned int       v,
+                         const types::material_id ply,
+                         const Point<dim>        &center,
+                         const double             h,
+                         FullMatrix<double>      &coefficients) {
+      LAPACKFullMatrix<double> normal(n_terms, n_terms);
+      FullMatrix<double>       rhs(n_terms, n_stress);
+      for (const auto &cell : cells_at[v])
+        if (cell->material_id() == ply)
+          {
+            sample(samples, cell);
+            const unsigned int k = cell->active_cell_index();
+            for (unsigned int q = 0; q < samples.points[k].size(); ++q)
+              {
+                const auto p = monomials<dim>(
+                  Point<dim>((samples.points[k][q] - center) / h), fe.degree);
+                for (unsigned int i = 0; i < n_terms; ++i)
+                  {
+                    for (unsigned int j = 0; j < n_terms; ++j)
+                      normal(i, j) += p[i] * p[j];
+                    for (unsigned int c = 0; c < n_stress; ++c)
+                      rhs(i, c)
+                        += p[i] * samples.stress[k][q].access_raw_entry(c);
+                  }
+              }
+          }
+      normal.compute_inverse_svd(1e-10);
+      for (unsigned int c = 0; c < n_stress; ++c)
+        {
+          dealii::Vector<double> b(n_terms), x(n_terms);
+          for (unsigned int i = 0; i < n_terms; ++i)
+            b[i] = rhs(i, c);
+          normal.vmult(x, b);
+          for (unsigned int i = 0; i < n_terms; ++i)
+            coefficients(i, c) = x[i];
+        }
+      return normal.singular_value(n_terms - 1)
+             > 1e-10 * normal.singular_value(0);
+    };
+
     for (unsigned int v = 0; v < needed.size(); ++v)
       {
         if (!needed[v])
@@ -190,49 +253,25 @@ namespace amfrac
             double            h      = 0;
             for (const auto &cell : cells_at[v])
               if (cell->material_id() == ply)
-                {
-                  sample(cell);
-                  h = std::max(h, cell->diameter());
-                }
-            // Normal equations of the least-squares fit in scaled local
-            // coordinates; a pseudo-inverse drops the terms the samples
-            // cannot see (e.g. z^2 in a ply one element thick).
-            LAPACKFullMatrix<double> normal(n_terms, n_terms);
-            FullMatrix<double>       rhs(n_terms, n_stress);
-            for (const auto &cell : cells_at[v])
-              if (cell->material_id() == ply)
-                {
-                  const unsigned int k = cell->active_cell_index();
-                  for (unsigned int q = 0; q < points[k].size(); ++q)
-                    {
-                      const auto p = monomials<dim>(
-                        Point<dim>((points[k][q] - center) / h), fe.degree);
-                      for (unsigned int i = 0; i < n_terms; ++i)
-                        {
-                          for (unsigned int j = 0; j < n_terms; ++j)
-                            normal(i, j) += p[i] * p[j];
-                          for (unsigned int c = 0; c < n_stress; ++c)
-                            rhs(i, c)
-                              += p[i] * stress[k][q].access_raw_entry(c);
-                        }
-                    }
-                }
-            normal.compute_inverse_svd(1e-10);
-            const bool full_rank = normal.singular_value(n_terms - 1)
-                                   > 1e-10 * normal.singular_value(0);
-            const unsigned int set = full_rank ? 0 : n_stress + 1;
+                h = std::max(h, cell->diameter());
             FullMatrix<double> coefficients(n_terms, n_stress);
-            for (unsigned int c = 0; c < n_stress; ++c)
-              {
-                dealii::Vector<double> b(n_terms), x(n_terms);
-                for (unsigned int i = 0; i < n_terms; ++i)
-                  b[i] = rhs(i, c);
-                normal.vmult(x, b);
-                for (unsigned int i = 0; i < n_terms; ++i)
-                  coefficients(i, c) = x[i];
-              }
+            bool               full_rank
+              = fit(superconvergent, v, ply, center, h, coefficients);
+            if (!full_rank)
+              full_rank = fit(thickness, v, ply, center, h, coefficients);
+            const unsigned int set = full_rank ? 0 : n_stress + 1;
+            // The fit goes to the nodes of the patch cells that have v as a
+            // vertex: a coarse cell next to a hanging vertex gives samples
+            // but no nodes (its far nodes would be an extrapolation, and a
+            // rank owning a cell there would not see this patch).
+            const auto has_vertex = [v](const auto &cell) {
+              for (const unsigned int i : cell->vertex_indices())
+                if (cell->vertex_index(i) == v)
+                  return true;
+              return false;
+            };
             for (const auto &tria_cell : cells_at[v])
-              if (tria_cell->material_id() == ply)
+              if (tria_cell->material_id() == ply && has_vertex(tria_cell))
                 {
                   const typename DoFHandler<dim>::active_cell_iterator cell(
                     &triangulation,

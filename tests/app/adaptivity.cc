@@ -4,7 +4,9 @@
 //   uniform meshes; the ZZ estimate against the true energy error. The
 //   effectivity index theta = ||e*|| / ||e|| must be within 0.9..1.1 on
 //   the finest Q1 and Q2 meshes and move towards 1. An optional second
-//   argument refines a region once more (e.g. "x < 0.5": hanging faces).
+//   argument refines a region once more (e.g. "x < 0.5": hanging faces), a
+//   third ("thin") makes the cube a plate 0.1 thick, one element through
+//   it (window 0.8..1.2).
 // peel: prm/adaptive_peel_2d.prm (a [0/90]s strip held on half of its
 //   bottom face, singular where the hold ends) refined uniformly, by ZZ
 //   and by Kelly. The true
@@ -32,12 +34,12 @@ namespace
 set Dimension = 3
 subsection Geometry
   set Stacking sequence     = [30]
-  set Total thickness       = 1
+  set Total thickness       = @THICKNESS@
   set Length                = 1
   set Width                 = 1
   set Elements along length = @N@
   set Elements along width  = @N@
-  set Elements per ply      = @N@
+  set Elements per ply      = @LAYERS@
   set Refinement region     = @REGION@
 end
 subsection Discretization
@@ -50,8 +52,12 @@ end
 )";
 
   void
-  effectivity(const bool root, const std::string &region)
+  effectivity(const bool root, const std::string &region, const bool thin)
   {
+    // A plate 0.1 thick with one element through it cannot show the error
+    // of its through-thickness variation, which grows as the in-plane mesh
+    // is refined: a wider window there.
+    const double window = thin ? 0.2 : 0.1;
     for (const unsigned int degree : {1u, 2u})
       {
         ConvergenceTable          table;
@@ -64,7 +70,13 @@ end
             const auto prm
               = parameters::Parameters::from_string(amfrac_test::substitute(
                 amfrac_test::substitute(
-                  amfrac_test::substitute(cube, "@REGION@", region),
+                  amfrac_test::substitute(
+                    amfrac_test::substitute(
+                      amfrac_test::substitute(cube, "@REGION@", region),
+                      "@THICKNESS@",
+                      thin ? "0.1" : "1"),
+                    "@LAYERS@",
+                    thin ? "1" : std::to_string(n)),
                   "@N@",
                   std::to_string(n)),
                 "@DEGREE@",
@@ -103,16 +115,16 @@ end
           }
         // SPR: asymptotically exact for Q1 and Q2 on this smooth problem
         // (the coarsest Q2 mesh has no interior vertex: no full patch).
-        amfrac_test::check(std::abs(theta.back() - 1) <= 0.1,
-                           "effectivity on the finest mesh within 0.9..1.1",
+        amfrac_test::check(std::abs(theta.back() - 1) <= window,
+                           "effectivity on the finest mesh within the window",
                            __FILE__,
                            __LINE__);
-        amfrac_test::check(std::abs(theta.back() - 1)
-                             <= std::max(std::abs(theta[theta.size() - 2] - 1),
-                                         0.05),
-                           "effectivity tends to 1 (or stays within 5 %)",
-                           __FILE__,
-                           __LINE__);
+        if (!thin)
+          amfrac_test::check(std::abs(theta.back() - 1) <= std::max(
+                               std::abs(theta[theta.size() - 2] - 1), 0.05),
+                             "effectivity tends to 1 (or stays within 5 %)",
+                             __FILE__,
+                             __LINE__);
       }
   }
 
@@ -321,7 +333,9 @@ main(int argc, char *argv[])
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   const std::string mode = argc > 1 ? argv[1] : "";
   if (mode == "effectivity")
-    effectivity(root, argc > 2 ? argv[2] : "");
+    effectivity(root,
+                argc > 2 ? argv[2] : "",
+                argc > 3 && std::string(argv[3]) == "thin");
   else if (mode == "hole" && argc > 2)
     open_hole(argv[2]);
   else if (mode == "peel" && argc > 2)
@@ -329,7 +343,7 @@ main(int argc, char *argv[])
   else
     {
       std::cerr
-        << "usage: app_adaptivity effectivity [REGION] | peel SCENE.prm | "
+        << "usage: app_adaptivity effectivity [REGION [thin]] | peel SCENE.prm | "
            "hole SCENE.prm"
         << std::endl;
       return 2;
