@@ -1,4 +1,5 @@
 #include <amfrac/adaptivity/error_estimator.h>
+#include <amfrac/base/nearest_points.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
@@ -401,21 +402,18 @@ namespace amfrac
       for (unsigned int q = 1; q < n; ++q)
         spacing = std::min(
           spacing, here.quadrature_point(0).distance(here.quadrature_point(q)));
+      double     largest_distance = 0;
+      const auto match            = nearest_points(here.get_quadrature_points(),
+                                        there.get_quadrature_points(),
+                                        largest_distance);
+      if (largest_distance > 0.25 * spacing)
+        throw std::logic_error("Kelly estimator: the face quadrature "
+                               "points of two neighbours do not pair up");
       double sum = 0;
       for (unsigned int q = 0; q < n; ++q)
         {
-          unsigned int match = 0;
-          for (unsigned int r = 1; r < n; ++r)
-            if (here.quadrature_point(q).distance(there.quadrature_point(r))
-                < here.quadrature_point(q).distance(
-                  there.quadrature_point(match)))
-              match = r;
-          if (here.quadrature_point(q).distance(there.quadrature_point(match))
-              > 0.25 * spacing)
-            throw std::logic_error("Kelly estimator: the face quadrature "
-                                   "points of two neighbours do not pair up");
           const Tensor<1, dim> t
-            = (mine[q] - theirs[match]) * here.normal_vector(q);
+            = (mine[q] - theirs[match[q]]) * here.normal_vector(q);
           sum += t * t * here.JxW(q);
         }
       return sum;

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <amfrac/base/nearest_points.h>
 #include <amfrac/cohesive/interface_assembler.h>
 #include <amfrac/parameters/expressions.h>
 #include <amfrac/parameters/input_error.h>
@@ -161,19 +162,14 @@ namespace amfrac
 
     // The face orientations of the two cells may differ: pair the points
     // by position.
-    std::vector<unsigned int> match(n_q);
+    double     largest_distance = 0;
+    const auto match            = nearest_points(lower.get_quadrature_points(),
+                                      upper.get_quadrature_points(),
+                                      largest_distance);
+    Assert(largest_distance < 1e-8 * cell->diameter(), ExcInternalError());
+    (void)largest_distance;
     for (unsigned int q = 0; q < n_q; ++q)
       {
-        unsigned int best = 0;
-        for (unsigned int p = 1; p < n_q; ++p)
-          if (upper.quadrature_point(p).distance(lower.quadrature_point(q))
-              < upper.quadrature_point(best).distance(
-                lower.quadrature_point(q)))
-            best = p;
-        Assert(upper.quadrature_point(best).distance(lower.quadrature_point(q))
-                 < 1e-8 * cell->diameter(),
-               ExcInternalError());
-        match[q] = best;
         element.JxW.push_back(lower.JxW(q));
         element.points.push_back(lower.quadrature_point(q));
         element.frame.push_back(local_frame<dim>(lower.normal_vector(q)));

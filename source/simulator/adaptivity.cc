@@ -38,7 +38,6 @@ namespace amfrac
             && last_zz.relative() <= adaptivity.target_error)
           break;
       }
-    cycle = std::min(cycle, adaptivity.cycles);
     table.set_scientific("zz_error", true);
     table.set_scientific("zz_relative", true);
     table.evaluate_convergence_rates("zz_error",
@@ -56,14 +55,10 @@ namespace amfrac
   void
   Simulator<dim>::estimate_error(const double t)
   {
-    TimerOutput::Scope        scope(timer, "estimate error");
-    const ErrorEstimator<dim> estimator(
-      dof_layer,
-      plies,
-      interfaces ? interfaces->released_faces() :
-                   typename TiedCopyDoFs<dim>::FaceFilter());
-    const auto displacement = estimator.replicate(relevant_solution);
-    last_zz                 = estimator.zienkiewicz_zhu(displacement);
+    TimerOutput::Scope scope(timer, "estimate error");
+    const auto         estimator    = error_estimator();
+    const auto         displacement = estimator.replicate(relevant_solution);
+    last_zz                         = estimator.zienkiewicz_zhu(displacement);
     if (parameters.adaptivity.estimator
         == parameters::Adaptivity::Estimator::kelly)
       {
@@ -95,7 +90,7 @@ namespace amfrac
          {"zz_relative_error", last_zz.relative()},
          {"energy_norm", last_zz.solution_norm}};
     for (const auto &entry : last_row)
-      if (entry.first != "step")
+      if (entry.first != "step" && entry.first != "cycle")
         row.push_back(entry);
     cycle_summary->add_row(row);
     pcout << "  cycle " << cycle << ": "
@@ -201,14 +196,23 @@ namespace amfrac
 
 
   template <int dim>
+  ErrorEstimator<dim>
+  Simulator<dim>::error_estimator() const
+  {
+    return ErrorEstimator<dim>(dof_layer,
+                               plies,
+                               interfaces ?
+                                 interfaces->released_faces() :
+                                 typename TiedCopyDoFs<dim>::FaceFilter());
+  }
+
+
+
+  template <int dim>
   std::pair<double, double>
   Simulator<dim>::energy_errors(const Function<dim> &exact) const
   {
-    const ErrorEstimator<dim> estimator(
-      dof_layer,
-      plies,
-      interfaces ? interfaces->released_faces() :
-                   typename TiedCopyDoFs<dim>::FaceFilter());
+    const auto estimator    = error_estimator();
     const auto displacement = estimator.replicate(relevant_solution);
     return {estimator.zienkiewicz_zhu(displacement).error,
             estimator.energy_error(displacement, exact)};

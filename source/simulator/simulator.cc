@@ -483,6 +483,9 @@ namespace amfrac
 
     std::vector<std::pair<std::string, double>> row
       = {{"step", step}, {"time", t}};
+    // Adaptive runs repeat the load steps on every mesh.
+    if (parameters.adaptivity.active())
+      row.insert(row.begin(), {"cycle", cycle});
     row.insert(row.end(), columns.begin(), columns.end());
     const char *axis = "xyz";
     for (unsigned int k = 0; k < prescribed.size(); ++k)

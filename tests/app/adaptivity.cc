@@ -81,20 +81,9 @@ end
                   std::to_string(n)),
                 "@DEGREE@",
                 std::to_string(degree)));
-            const Laminate laminate(prm.geometry, prm.materials);
-            const auto     plies = make_ply_table<3>(laminate, prm.materials);
-            auto           exact = std::make_shared<amfrac_test::Exact>();
-            Simulator<3>   simulator(prm, MPI_COMM_WORLD);
-            simulator.set_body_force(
-              std::make_shared<amfrac_test::BodyForce>(plies[0].stiffness_3d));
-            std::vector<PrescribedDisplacement<3>> supports;
-            for (types::boundary_id id = 0; id < 6; ++id)
-              supports.push_back({"face" + std::to_string(id),
-                                  id,
-                                  exact,
-                                  {{true, true, true}},
-                                  nullptr});
-            simulator.set_prescribed_displacements(supports);
+            auto         exact = std::make_shared<amfrac_test::Exact>();
+            Simulator<3> simulator(prm, MPI_COMM_WORLD);
+            amfrac_test::pose_manufactured(simulator, prm, exact);
             simulator.run();
             const auto [estimate, error] = simulator.energy_errors(*exact);
             theta.push_back(estimate / error);

@@ -3,9 +3,13 @@
 // The manufactured solution of the tests: a rotated orthotropic ply with a
 // smooth non-polynomial displacement u_k = sin(a_k . x + phi_k), its body
 // force f = -div(C : eps(u)) and Dirichlet data from u on all faces.
+#include <amfrac/geometry/laminate.h>
+#include <amfrac/material/ply_table.h>
+#include <amfrac/simulator/simulator.h>
 #include <cmath>
 #include <deal.II/base/function.h>
 #include <deal.II/base/symmetric_tensor.h>
+#include <memory>
 
 namespace amfrac_test
 {
@@ -68,4 +72,25 @@ namespace amfrac_test
     const SymmetricTensor<4, 3> C;
   };
 
+
+  /** Pose the manufactured problem on @p simulator: the body force of the
+   * scene's first ply and the exact displacement on all six faces. */
+  inline void
+  pose_manufactured(amfrac::Simulator<3>                 &simulator,
+                    const amfrac::parameters::Parameters &prm,
+                    const std::shared_ptr<Exact>         &exact)
+  {
+    const amfrac::Laminate laminate(prm.geometry, prm.materials);
+    const auto plies = amfrac::make_ply_table<3>(laminate, prm.materials);
+    simulator.set_body_force(
+      std::make_shared<BodyForce>(plies[0].stiffness_3d));
+    std::vector<amfrac::PrescribedDisplacement<3>> supports;
+    for (types::boundary_id id = 0; id < 6; ++id)
+      supports.push_back({"face" + std::to_string(id),
+                          id,
+                          exact,
+                          {{true, true, true}},
+                          nullptr});
+    simulator.set_prescribed_displacements(supports);
+  }
 } // namespace amfrac_test

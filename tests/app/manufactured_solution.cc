@@ -18,7 +18,6 @@ using namespace amfrac;
 
 namespace
 {
-  using amfrac_test::BodyForce;
   using amfrac_test::Exact;
 
   const char *scene = R"(
@@ -63,21 +62,9 @@ main(int argc, char *argv[])
               amfrac_test::substitute(scene, "@N@", std::to_string(n)),
               "@DEGREE@",
               std::to_string(degree)));
-          const Laminate laminate(prm.geometry, prm.materials);
-          const auto     plies = make_ply_table<3>(laminate, prm.materials);
-          auto           exact = std::make_shared<Exact>();
-
+          auto         exact = std::make_shared<Exact>();
           Simulator<3> simulator(prm, MPI_COMM_WORLD);
-          simulator.set_body_force(
-            std::make_shared<BodyForce>(plies[0].stiffness_3d));
-          std::vector<PrescribedDisplacement<3>> supports;
-          for (types::boundary_id id = 0; id < 6; ++id)
-            supports.push_back({"face" + std::to_string(id),
-                                id,
-                                exact,
-                                {{true, true, true}},
-                                nullptr});
-          simulator.set_prescribed_displacements(supports);
+          amfrac_test::pose_manufactured(simulator, prm, exact);
           simulator.run();
 
           L2.push_back(simulator.compute_error(*exact, VectorTools::L2_norm));

@@ -226,6 +226,9 @@ namespace amfrac
     /** Refinement cycles of a linear scene (Adaptivity subsection). */
     void
     run_adaptive();
+    /** The estimators on the current mesh and DoF layer. */
+    ErrorEstimator<dim>
+    error_estimator() const;
     /** Both estimates of the solution at @p t (ZZ always, Kelly if it
      * is the chosen estimator), into last_zz and last_estimate. */
     void
