@@ -28,6 +28,21 @@ namespace amfrac
 
 
 
+  namespace
+  {
+    /** The cell @p cell of a triangulation as an iterator of @p handler
+     * (the displacement and the recovery layer share the mesh). */
+    template <int dim, typename Iterator>
+    typename DoFHandler<dim>::active_cell_iterator
+    on_handler(const Iterator &cell, const DoFHandler<dim> &handler)
+    {
+      return typename DoFHandler<dim>::active_cell_iterator(
+        &handler.get_triangulation(), cell->level(), cell->index(), &handler);
+    }
+  } // namespace
+
+
+
   template <int dim>
   ErrorEstimator<dim>::ErrorEstimator(
     const TiedCopyDoFs<dim>               &dofs,
@@ -165,11 +180,7 @@ namespace amfrac
       const unsigned int k = tria_cell->active_cell_index();
       if (samples.stress[k].empty())
         {
-          const typename DoFHandler<dim>::active_cell_iterator cell(
-            &triangulation,
-            tria_cell->level(),
-            tria_cell->index(),
-            &dofs.copy_handler());
+          const auto cell = on_handler(tria_cell, dofs.copy_handler());
           samples.values.reinit(cell);
           cell_stresses(cell, u, samples.values, samples.stress[k]);
           samples.points[k] = samples.values.get_quadrature_points();
@@ -274,11 +285,8 @@ namespace amfrac
             for (const auto &tria_cell : cells_at[v])
               if (tria_cell->material_id() == ply && has_vertex(tria_cell))
                 {
-                  const typename DoFHandler<dim>::active_cell_iterator cell(
-                    &triangulation,
-                    tria_cell->level(),
-                    tria_cell->index(),
-                    &recovery.copy_handler());
+                  const auto cell
+                    = on_handler(tria_cell, recovery.copy_handler());
                   recovery.get_dof_indices(cell, indices);
                   for (unsigned int j = 0; j < n_nodes; ++j)
                     {
@@ -342,11 +350,7 @@ namespace amfrac
         {
           values.reinit(cell);
           cell_stresses(cell, u, values, stress);
-          const typename DoFHandler<dim>::active_cell_iterator same(
-            &triangulation,
-            cell->level(),
-            cell->index(),
-            &recovery.copy_handler());
+          const auto same = on_handler(cell, recovery.copy_handler());
           recovery.get_dof_indices(same, indices);
           const auto &S = compliance[cell->material_id()];
           double      e = 0;
