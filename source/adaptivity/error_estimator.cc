@@ -64,11 +64,7 @@ namespace amfrac
   ErrorEstimator<dim>::replicate(
     const TrilinosWrappers::MPI::Vector &owned) const
   {
-    dealii::Vector<double> local(dofs.n_dofs()), all(dofs.n_dofs());
-    for (const auto i : dofs.locally_owned_dofs())
-      local[i] = owned[i];
-    Utilities::MPI::sum(local, comm, all);
-    return all;
+    return dofs.replicate(owned);
   }
 
 

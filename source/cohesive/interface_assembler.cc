@@ -82,8 +82,9 @@ namespace amfrac
 
   template <int dim>
   bool
-  CohesiveInterfaces<dim>::is_cohesive(const CellIterator &cell,
-                                       const unsigned int  face) const
+  CohesiveInterfaces<dim>::is_cohesive(
+    const typename Triangulation<dim>::cell_iterator &cell,
+    const unsigned int                                face) const
   {
     if (cell->at_boundary(face))
       return false;
@@ -146,6 +147,8 @@ namespace amfrac
     upper.reinit(neighbor, neighbor_face);
 
     Element element;
+    element.cell      = cell->id();
+    element.face      = face;
     element.interface = std::lower_bound(data.interfaces.begin(),
                                          data.interfaces.end(),
                                          std::min(cell->material_id(),
@@ -168,10 +171,13 @@ namespace amfrac
                                       largest_distance);
     Assert(largest_distance < 1e-8 * cell->diameter(), ExcInternalError());
     (void)largest_distance;
+    static const MappingQ1<dim> mapping;
     for (unsigned int q = 0; q < n_q; ++q)
       {
         element.JxW.push_back(lower.JxW(q));
         element.points.push_back(lower.quadrature_point(q));
+        element.unit_points.push_back(
+          mapping.transform_real_to_unit_cell(cell, lower.quadrature_point(q)));
         element.frame.push_back(local_frame<dim>(lower.normal_vector(q)));
       }
     for (unsigned int k = 0; k < lower_local.size(); ++k)
@@ -209,7 +215,8 @@ namespace amfrac
   {
     check_conforming(dofs.copy_handler());
     elements.clear();
-    const unsigned int        n_nodes = dofs.get_fe().degree + 1;
+    const unsigned int n_nodes = dofs.get_fe().degree + 1;
+    set_point_regions(n_nodes);
     const Quadrature<dim - 1> quadrature
       = data.lobatto ? Quadrature<dim - 1>(QGaussLobatto<dim - 1>(n_nodes)) :
                        Quadrature<dim - 1>(QGauss<dim - 1>(n_nodes));
@@ -573,6 +580,37 @@ namespace amfrac
 
 
   template <int dim>
+  double
+  CohesiveInterfaces<dim>::stored_energy(const PointState &s) const
+  {
+    // The secant law unloads to the origin: what is stored is half of
+    // traction times gap while bonded; after debonding the contact penalty
+    // and the elastic stick stretch store energy.
+    if (!s.history.debonded)
+      return 0.5 * s.traction * s.gap;
+    double tangential = 0;
+    for (unsigned int i = 1; i < dim; ++i)
+      tangential += s.traction[i] * s.traction[i];
+    return 0.5 * s.traction[0] * s.gap[0]
+           + 0.5 * tangential / law.stick_penalty;
+  }
+
+
+
+  template <int dim>
+  double
+  CohesiveInterfaces<dim>::damage(const PointState &state) const
+  {
+    if (state.history.debonded)
+      return 1.;
+    return data.camanho_davila ?
+             state.history.kappa :
+             cohesive::seed_damage(state.history.kappa, law);
+  }
+
+
+
+  template <int dim>
   std::vector<InterfacePointRecord<dim>>
   CohesiveInterfaces<dim>::output_points(const Vector &solution) const
   {
@@ -594,11 +632,7 @@ namespace amfrac
               r.displacement[element.component[k]]
                 += 0.5 * (k < n / 2 ? -1 : 1) * element.shape(q, k)
                    * solution(element.dofs[k]);
-            r.damage   = s.history.debonded ?
-                           1. :
-                         data.camanho_davila ?
-                           s.history.kappa :
-                           cohesive::seed_damage(s.history.kappa, law);
+            r.damage   = damage(s);
             r.gap      = s.gap;
             r.traction = s.traction;
             r.status   = s.history.debonded ?
@@ -623,20 +657,9 @@ namespace amfrac
         Ledger &l = result[element.interface];
         for (unsigned int q = 0; q < element.JxW.size(); ++q)
           {
-            const PointState &s   = element.converged[q];
-            const double      JxW = element.JxW[q];
-            // The secant law unloads to the origin: what is stored is half
-            // of traction times gap while bonded; after debonding the
-            // contact penalty and the elastic stick stretch store energy.
-            double stored = 0.5 * s.traction * s.gap;
-            if (s.history.debonded)
-              {
-                double tangential = 0;
-                for (unsigned int i = 1; i < dim; ++i)
-                  tangential += s.traction[i] * s.traction[i];
-                stored = 0.5 * s.traction[0] * s.gap[0]
-                         + 0.5 * tangential / law.stick_penalty;
-              }
+            const PointState &s      = element.converged[q];
+            const double      JxW    = element.JxW[q];
+            const double      stored = stored_energy(s);
             l.work += (s.bond_work + s.friction_work + s.viscous_work) * JxW;
             l.viscous += s.viscous_work * JxW;
             l.stored += stored * JxW;

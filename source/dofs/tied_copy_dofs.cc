@@ -343,6 +343,51 @@ namespace amfrac
 
 
 
+  template <int dim>
+  Vector<double>
+  TiedCopyDoFs<dim>::replicate(const TrilinosWrappers::MPI::Vector &owned) const
+  {
+    Vector<double> local(n_dofs()), all(n_dofs());
+    for (const auto i : owned_dofs)
+      local[i] = owned[i];
+    Utilities::MPI::sum(local, triangulation.get_communicator(), all);
+    return all;
+  }
+
+
+
+  template <int dim>
+  void
+  TiedCopyDoFs<dim>::expand_all(const Vector<double> &replicated,
+                                Vector<double>       &copies) const
+  {
+    copies.reinit(n_copies());
+    for (types::global_dof_index c = 0; c < n_copies(); ++c)
+      copies[c] = replicated[copy_to_reduced[c]];
+  }
+
+
+
+  template <int dim>
+  void
+  TiedCopyDoFs<dim>::gather(const Vector<double>          &copies,
+                            TrilinosWrappers::MPI::Vector &reduced) const
+  {
+    std::vector<double>       sum(n_dofs(), 0.);
+    std::vector<unsigned int> count(n_dofs(), 0);
+    for (types::global_dof_index c = 0; c < n_copies(); ++c)
+      if (owned_dofs.is_element(copy_to_reduced[c]))
+        {
+          sum[copy_to_reduced[c]] += copies[c];
+          ++count[copy_to_reduced[c]];
+        }
+    for (const auto i : owned_dofs)
+      reduced[i] = sum[i] / count[i];
+    reduced.compress(VectorOperation::insert);
+  }
+
+
+
   template class TiedCopyDoFs<2>;
   template class TiedCopyDoFs<3>;
 } // namespace amfrac

@@ -1323,13 +1323,24 @@ namespace amfrac
       adaptivity.parse_parameters(prm);
       if (adaptivity.active() && !cohesive.interfaces.empty())
         throw InputError("Adaptivity/Refinement cycles",
-                         "adaptive refinement of scenes with cohesive "
-                         "interfaces is not available yet; set Refinement "
-                         "cycles = 0 or Cohesive interfaces = none");
-      if (adaptivity.active() && time.explicit_dynamics)
+                         "a scene with cohesive interfaces adapts during its "
+                         "load history (Refine every, Error threshold, "
+                         "Process zone elements), not by cycles of whole "
+                         "runs; set Refinement cycles = 0");
+      if (adaptivity.during_history() && cohesive.interfaces.empty())
+        throw InputError(
+          adaptivity.process_zone_elements > 0 ?
+            "Adaptivity/Process zone elements" :
+          adaptivity.refine_every > 0 ? "Adaptivity/Refine every" :
+                                        "Adaptivity/Error threshold",
+          "refinement during a load history is for scenes with cohesive "
+          "interfaces; a linear scene adapts by Refinement cycles");
+      if ((adaptivity.active() || adaptivity.during_history())
+          && time.explicit_dynamics)
         throw InputError("Adaptivity/Refinement cycles",
                          "adaptive refinement of explicit runs is not "
-                         "available yet; set Refinement cycles = 0");
+                         "available yet (the explicit path takes no hanging "
+                         "nodes); switch the Adaptivity subsection off");
     }
 
 
@@ -1388,6 +1399,31 @@ namespace amfrac
                         Patterns::Integer(1, 30),
                         "Cells of this level (0: the initial structured "
                         "mesh before global refinements) are not refined.");
+      prm.declare_entry("Refine every",
+                        "0",
+                        Patterns::Integer(0),
+                        "Scenes with cohesive interfaces: estimate, mark by "
+                        "Strategy and refine after every this many "
+                        "converged load steps, moving the state to the new "
+                        "mesh (0: never).");
+      prm.declare_entry("Error threshold",
+                        "0",
+                        Patterns::Double(0, 1),
+                        "Scenes with cohesive interfaces: also refine "
+                        "after a converged step whose relative ZZ error "
+                        "exceeds this (the seed's criterion; 0: off).");
+      prm.declare_entry("Process zone elements",
+                        "0",
+                        Patterns::Integer(0, 100),
+                        "Scenes with cohesive interfaces: keep at least "
+                        "this many elements (in-plane size) across the "
+                        "cohesive-zone length l_cz = 0.88 E_zz G_Ic / "
+                        "sigma_N^2 [mm] around every delamination front, "
+                        "i.e. within l_cz of the bonded points that lie "
+                        "within l_cz of a damaged or debonded point; cells "
+                        "farther than 3 l_cz are coarsened (never below "
+                        "the initial mesh). Checked after every converged "
+                        "step and before the first (0: off).");
       prm.leave_subsection();
     }
 
@@ -1409,6 +1445,9 @@ namespace amfrac
       coarsen_fraction       = prm.get_double("Coarsen fraction");
       target_error           = prm.get_double("Target error");
       max_level              = prm.get_integer("Maximum refinement level");
+      refine_every           = prm.get_integer("Refine every");
+      error_threshold        = prm.get_double("Error threshold");
+      process_zone_elements  = prm.get_integer("Process zone elements");
       prm.leave_subsection();
       if (strategy == Strategy::error_target && estimator == Estimator::kelly)
         throw InputError("Adaptivity/Strategy",

@@ -109,6 +109,24 @@ namespace amfrac
   bool
   Simulator<dim>::refine_mesh()
   {
+    mark_by_estimate();
+    if (!limit_flags())
+      {
+        pcout << "  no cell left to refine (Maximum refinement level "
+              << parameters.adaptivity.max_level << "): the cycles stop"
+              << std::endl;
+        return false;
+      }
+    triangulation.execute_coarsening_and_refinement();
+    return true;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::mark_by_estimate()
+  {
     using Strategy         = parameters::Adaptivity::Strategy;
     const auto &adaptivity = parameters.adaptivity;
     const auto &errors     = last_estimate.cell_errors;
@@ -146,6 +164,15 @@ namespace amfrac
             break;
           }
       }
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::limit_flags()
+  {
+    const auto &adaptivity = parameters.adaptivity;
     // Every rank flags the same cells (the indicators are summed over the
     // ranks), as the shared triangulation requires.
     bool any = false;
@@ -160,14 +187,7 @@ namespace amfrac
           cell->clear_coarsen_flag();
         any = any || cell->refine_flag_set() || cell->coarsen_flag_set();
       }
-    if (!any)
-      {
-        pcout << "  no cell left to refine (Maximum refinement level "
-              << adaptivity.max_level << "): the cycles stop" << std::endl;
-        return false;
-      }
-    triangulation.execute_coarsening_and_refinement();
-    return true;
+    return any;
   }
 
 

@@ -313,6 +313,20 @@ end
 subsection Adaptivity
   set Refinement cycles = 2
 end"
+expect adaptivity_history_linear "Adaptivity/Process zone elements" "$base
+subsection Adaptivity
+  set Process zone elements = 2
+end"
+expect adaptivity_history_explicit "Adaptivity/Refinement cycles" "$base
+subsection Cohesive interfaces
+  set Interfaces = all
+end
+subsection Time
+  set Time integration = explicit
+end
+subsection Adaptivity
+  set Refine every = 5
+end"
 
 # A missing file and an unknown option.
 "$amfrac" no_such_file.prm > /dev/null 2> missing.stderr

@@ -5,13 +5,16 @@
 #include <amfrac/dofs/tied_copy_dofs.h>
 #include <amfrac/parameters/parameters.h>
 #include <amfrac/postprocess/interface_output.h>
+#include <array>
 #include <deal.II/base/partitioner.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/cell_id.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <map>
 #include <vector>
 
 namespace amfrac
@@ -174,6 +177,70 @@ namespace amfrac
     std::size_t
     n_local_points() const;
 
+    /** Adaptivity (the process-zone rule): the bonded points of all ranks
+     * that lie within @p reach[k] of a damaged or debonded point of the
+     * same interface (the k-th of interfaces()), i.e. the stretch ahead of
+     * every delamination front, each with the reach of its interface. */
+    std::vector<std::pair<Point<dim>, double>>
+    front_points(const std::vector<double> &reach, const MPI_Comm comm) const;
+
+    /** Adaptivity: make the refine and coarsen flags of @p triangulation
+     * agree across every cohesive face, so that both sides stay
+     * conforming (a face is refined or coarsened on both sides or on
+     * none). Calls prepare_coarsening_and_refinement() until the flags
+     * settle; returns false if no flag is left. */
+    bool
+    match_flags(Triangulation<dim> &triangulation) const;
+
+    /** The converged interface states of all ranks, keyed by the lower
+     * cell and its face, taken before the mesh changes. */
+    struct Snapshot
+    {
+      struct Face
+      {
+        CellId                  cell;
+        unsigned int            face;
+        std::vector<Point<dim>> unit_points; ///< in the lower cell
+        std::vector<double>     JxW;
+        std::vector<double>     states; ///< packed, state_size() per point
+      };
+      std::vector<Face> faces;
+      /** (lower cell, face) to the position in faces. */
+      std::map<std::pair<CellId, unsigned int>, std::size_t> index;
+    };
+
+    Snapshot
+    snapshot(const MPI_Comm comm) const;
+
+    /** What a transfer did, summed over the ranks. */
+    struct TransferReport
+    {
+      unsigned long injected   = 0; ///< points inside an old face
+      unsigned long aggregated = 0; ///< points of a coarsened face
+      /** Points whose damage (or debonded status) grew under the gap of
+       * the transferred displacement; kept as it was. */
+      unsigned long beyond_history = 0;
+      /** |sum of the interface forces on all nodes| / sum of their
+       * magnitudes at the transferred state: round-off if the two faces of
+       * every new interface element match. */
+      double force_imbalance = 0;
+    };
+
+    /**
+     * The seed's tau_1 for interface history, after setup() on the new
+     * mesh: a point inside an old face (kept or refined) takes the state of
+     * the nearest old point of that face (injection: on two-point rules
+     * every old point hands its state to the children that its weight
+     * covers, so dissipated energy is kept exactly); a point of a
+     * coarsened face takes the largest damage, the debonded status and the
+     * JxW-weighted works of the old points nearest to it (damage never
+     * decreases, dissipated energy is kept). Gap and traction are then
+     * those of @p solution (the transferred displacement, locally relevant
+     * entries) under the transferred history.
+     */
+    TransferReport
+    transfer(const Snapshot &old, const Vector &solution, const MPI_Comm comm);
+
   private:
     /** The state of one interface point. */
     struct PointState
@@ -191,6 +258,8 @@ namespace amfrac
     /** Two faces across an interface and what their integration needs. */
     struct Element
     {
+      CellId                               cell;      ///< the lower cell
+      unsigned int                         face;      ///< of the lower cell
       unsigned int                         interface; ///< position in list
       std::vector<types::global_dof_index> dofs; ///< lower face, upper face
       std::vector<unsigned char>           component;
@@ -200,8 +269,10 @@ namespace amfrac
       std::vector<double>         JxW;
       std::vector<Tensor<2, dim>> frame; ///< rows: normal, tangents
       std::vector<Point<dim>>     points;
-      std::vector<PointState>     converged;
-      std::vector<PointState>     trial;
+      /** The points in the lower cell's reference coordinates. */
+      std::vector<Point<dim>> unit_points;
+      std::vector<PointState> converged;
+      std::vector<PointState> trial;
       /** The point tangents (global frame, times JxW) of the last
        * assemble() with a matrix, and of the last factorized matrix. */
       std::vector<Tensor<2, dim>> assembled;
@@ -238,7 +309,53 @@ namespace amfrac
     count_contact_change(Element &element, const unsigned int q);
 
     bool
-    is_cohesive(const CellIterator &cell, const unsigned int face) const;
+    is_cohesive(const typename Triangulation<dim>::cell_iterator &cell,
+                const unsigned int                                face) const;
+
+    /** Energy per area held elastically at a point (the ledger's
+     * "stored"). */
+    double
+    stored_energy(const PointState &state) const;
+
+    /** The 1D rule of the interface points (a face's rule is its tensor
+     * product): each point owns the stretch of [0, 1] that its weight
+     * covers, [bounds[i], bounds[i + 1]]. */
+    std::vector<double> rule_points, rule_bounds;
+    void
+    set_point_regions(const unsigned int n_points);
+
+    /** Damage of a point for output and for the front (1 if debonded). */
+    double
+    damage(const PointState &state) const;
+
+    static constexpr unsigned int
+    state_size()
+    {
+      return 3 * dim + (dim - 1) + 5;
+    }
+    static void
+    pack(const PointState &state, std::vector<double> &out);
+    static PointState
+    unpack(const double *in);
+
+    /** The region of the point at @p unit (reference coordinates of a
+     * cell whose face @p face it lies on), mapped into a coarser cell's
+     * coordinates in which that cell is the box @p lower + @p size. */
+    std::array<std::pair<double, double>, dim>
+    point_region(const Point<dim>  &unit,
+                 const unsigned int face,
+                 const Point<dim>  &lower,
+                 const double       size) const;
+
+    /** The state of every point of @p element from the old faces. */
+    void
+    transfer_element(Element        &element,
+                     const Snapshot &old,
+                     TransferReport &report) const;
+
+    /** Gap and traction of the converged states at @p solution. */
+    void
+    rebase(Element &element, const Vector &solution, TransferReport &report);
 
     void
     check_conforming(const DoFHandler<dim> &handler) const;

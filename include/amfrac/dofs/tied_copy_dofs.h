@@ -4,6 +4,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 #include <functional>
 #include <memory>
@@ -142,6 +143,26 @@ namespace amfrac
     template <typename VectorType>
     void
     expand(const VectorType &reduced, Vector<double> &copies) const;
+
+    /** Every reduced entry on every rank, from the owned entries of
+     * @p owned (a sum over the ranks). */
+    Vector<double>
+    replicate(const TrilinosWrappers::MPI::Vector &owned) const;
+
+    /** The copy values of all cells, owned or not, from a replicated
+     * reduced vector (for SolutionTransfer on copy_handler(), which visits
+     * every cell of the shared mesh). */
+    void
+    expand_all(const Vector<double> &replicated, Vector<double> &copies) const;
+
+    /** The owned entries of @p reduced from copy values on all cells, the
+     * copies of a group averaged: the inverse of expand_all() for a field
+     * of the space (on a coarsened cell the copies of a group may differ
+     * by the projection's round-off). Hanging entries are left to the
+     * constraints. */
+    void
+    gather(const Vector<double>          &copies,
+           TrilinosWrappers::MPI::Vector &reduced) const;
 
     /** Bytes held by the layer (copies, tie map, support points). */
     std::size_t

@@ -306,11 +306,31 @@ namespace amfrac
       double       coarsen_fraction;
       double       target_error;
       unsigned int max_level;
+      /** Adaptivity during a load history (scenes with cohesive
+       * interfaces). */
+      unsigned int refine_every;
+      double       error_threshold;
+      unsigned int process_zone_elements;
 
       bool
       active() const
       {
         return cycles > 0;
+      }
+
+      /** Refinement between the steps of a load history. */
+      bool
+      during_history() const
+      {
+        return refine_every > 0 || error_threshold > 0
+               || process_zone_elements > 0;
+      }
+
+      /** Marking by the estimator (not only by the process-zone rule). */
+      bool
+      by_estimator() const
+      {
+        return refine_every > 0 || error_threshold > 0;
       }
 
       static void

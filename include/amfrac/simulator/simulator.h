@@ -114,6 +114,14 @@ namespace amfrac
                           std::vector<InterfacePointRecord<dim>>();
     }
 
+    /** Adaptive runs: adaptivity.csv (one row per cycle, or per mesh
+     * change during a load history); nullptr before the first. */
+    const History *
+    adaptivity_history() const
+    {
+      return cycle_summary.get();
+    }
+
     /** Adaptive runs: the estimate of the last cycle. */
     const typename ErrorEstimator<dim>::Estimate &
     error_estimate() const
@@ -237,6 +245,32 @@ namespace amfrac
      * marked. */
     bool
     refine_mesh();
+    /** Flags by the Adaptivity strategy from last_estimate. */
+    void
+    mark_by_estimate();
+    /** Clear flags beyond Maximum refinement level and below the initial
+     * mesh; false if no flag is left. */
+    bool
+    limit_flags();
+    /** Scenes with cohesive interfaces: after converged step @p step
+     * (0: before the first) at @p t, refine and coarsen if Refine every,
+     * Error threshold or the process-zone rule asks for it, and move the
+     * converged state to the new mesh. */
+    void
+    adapt_during_history(const unsigned int step, const double t);
+    /** The process-zone rule: refine near the delamination fronts,
+     * coarsen far from them (if nothing else marks). */
+    void
+    mark_process_zone(const bool coarsen);
+    /** l_cz = 0.88 E_zz G_Ic / sigma_N^2 per cohesive interface (E_zz of
+     * the ply below it). */
+    std::vector<double>
+    process_zone_lengths() const;
+    /** Execute the flags and move the converged Newton state at @p t:
+     * displacement by SolutionTransfer on the copy layer (tau_2),
+     * interface history by CohesiveInterfaces::transfer() (tau_1). */
+    void
+    refine_and_transfer(const unsigned int step, const double t);
     /** Rebuild everything that depends on the mesh. */
     void
     setup_after_refinement();

@@ -1,0 +1,473 @@
+// Adaptivity of the cohesive interfaces: where the delamination fronts are
+// (the process-zone rule), refinement flags that keep both sides of an
+// interface conforming, and the transfer of the interface history to the
+// new mesh (the seed's tau_1 with an injection / max rule for damage).
+#include <amfrac/cohesive/interface_assembler.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/numerics/rtree.h>
+#include <limits>
+
+namespace amfrac
+{
+  namespace
+  {
+    namespace bgi = boost::geometry::index;
+
+    /** The box of cell @p descendant in the reference coordinates of its
+     * ancestor (or itself) @p ancestor: lower corner and edge length (the
+     * isotropic children of a hypercube are numbered lexicographically,
+     * bit d of the child index is the upper half along axis d). */
+    template <int dim>
+    std::pair<Point<dim>, double>
+    descendant_box(const CellId &ancestor, const CellId &descendant)
+    {
+      const auto outer = ancestor.get_child_indices();
+      const auto inner = descendant.get_child_indices();
+      Point<dim> lower;
+      double     size = 1;
+      for (unsigned int l = outer.size(); l < inner.size(); ++l)
+        {
+          size *= 0.5;
+          for (unsigned int d = 0; d < dim; ++d)
+            if ((inner[l] >> d) & 1)
+              lower[d] += size;
+        }
+      return {lower, size};
+    }
+
+    template <int dim>
+    double
+    overlap(const std::array<std::pair<double, double>, dim> &a,
+            const std::array<std::pair<double, double>, dim> &b)
+    {
+      double measure = 1;
+      for (unsigned int d = 0; d < dim; ++d)
+        measure *= std::max(0.,
+                            std::min(a[d].second, b[d].second)
+                              - std::max(a[d].first, b[d].first));
+      return measure;
+    }
+
+    CellId
+    parent_id(const CellId &id)
+    {
+      const auto children = id.get_child_indices();
+      return CellId(id.get_coarse_cell_id(),
+                    std::vector<std::uint8_t>(children.begin(),
+                                              children.end() - 1));
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  std::vector<std::pair<Point<dim>, double>>
+  CohesiveInterfaces<dim>::front_points(const std::vector<double> &reach,
+                                        const MPI_Comm             comm) const
+  {
+    // The damaged and debonded points of all ranks, per interface.
+    std::vector<std::vector<Point<dim>>> damaged(data.interfaces.size());
+    for (const Element &element : elements)
+      for (unsigned int q = 0; q < element.points.size(); ++q)
+        if (damage(element.converged[q]) > 0)
+          damaged[element.interface].push_back(element.points[q]);
+    for (auto &points : damaged)
+      {
+        std::vector<Point<dim>> all;
+        for (const auto &part : Utilities::MPI::all_gather(comm, points))
+          all.insert(all.end(), part.begin(), part.end());
+        points.swap(all);
+      }
+
+    std::vector<std::pair<Point<dim>, double>> local;
+    for (unsigned int k = 0; k < damaged.size(); ++k)
+      {
+        if (damaged[k].empty())
+          continue;
+        const auto tree = pack_rtree(damaged[k]);
+        for (const Element &element : elements)
+          if (element.interface == k)
+            for (unsigned int q = 0; q < element.points.size(); ++q)
+              {
+                if (element.converged[q].history.debonded)
+                  continue;
+                std::vector<Point<dim>> closest;
+                tree.query(bgi::nearest(element.points[q], 1),
+                           std::back_inserter(closest));
+                if (element.points[q].distance(closest[0]) <= reach[k])
+                  local.emplace_back(element.points[q], reach[k]);
+              }
+      }
+    std::vector<std::pair<Point<dim>, double>> result;
+    for (const auto &part : Utilities::MPI::all_gather(comm, local))
+      result.insert(result.end(), part.begin(), part.end());
+    return result;
+  }
+
+
+
+  template <int dim>
+  bool
+  CohesiveInterfaces<dim>::match_flags(Triangulation<dim> &triangulation) const
+  {
+    // Every rank holds the whole mesh and the same flags, and this loop is
+    // deterministic, so the ranks stay in agreement.
+    const auto clear_siblings = [](const auto &cell) {
+      if (cell->level() == 0)
+        {
+          cell->clear_coarsen_flag();
+          return;
+        }
+      for (const auto &sibling : cell->parent()->child_iterators())
+        if (sibling->is_active())
+          sibling->clear_coarsen_flag();
+    };
+    for (unsigned int pass = 0; pass < 50; ++pass)
+      {
+        triangulation.prepare_coarsening_and_refinement();
+        bool changed = false;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          for (const unsigned int f : cell->face_indices())
+            {
+              if (!is_cohesive(cell, f) || !cell->neighbor(f)->is_active())
+                continue;
+              const auto neighbor = cell->neighbor(f);
+              if (cell->refine_flag_set() && !neighbor->refine_flag_set())
+                {
+                  neighbor->clear_coarsen_flag();
+                  neighbor->set_refine_flag();
+                  changed = true;
+                }
+              if (cell->coarsen_flag_set() != neighbor->coarsen_flag_set())
+                {
+                  clear_siblings(cell);
+                  clear_siblings(neighbor);
+                  changed = true;
+                }
+            }
+        if (!changed)
+          {
+            for (const auto &cell : triangulation.active_cell_iterators())
+              if (cell->refine_flag_set() || cell->coarsen_flag_set())
+                return true;
+            return false;
+          }
+      }
+    AssertThrow(false,
+                ExcMessage("refinement flags across the cohesive interfaces "
+                           "did not settle"));
+    return false;
+  }
+
+
+
+  template <int dim>
+  void
+  CohesiveInterfaces<dim>::pack(const PointState &s, std::vector<double> &out)
+  {
+    out.push_back(s.history.kappa);
+    out.push_back(s.history.debonded ? 1. : 0.);
+    for (unsigned int i = 0; i < dim - 1; ++i)
+      out.push_back(s.history.slip[i]);
+    for (const Tensor<1, dim> *t : {&s.gap, &s.traction, &s.viscous})
+      for (unsigned int i = 0; i < dim; ++i)
+        out.push_back((*t)[i]);
+    out.push_back(s.bond_work);
+    out.push_back(s.friction_work);
+    out.push_back(s.viscous_work);
+  }
+
+
+
+  template <int dim>
+  typename CohesiveInterfaces<dim>::PointState
+  CohesiveInterfaces<dim>::unpack(const double *in)
+  {
+    PointState s;
+    s.history.kappa    = *in++;
+    s.history.debonded = *in++ != 0.;
+    for (unsigned int i = 0; i < dim - 1; ++i)
+      s.history.slip[i] = *in++;
+    for (Tensor<1, dim> *t : {&s.gap, &s.traction, &s.viscous})
+      for (unsigned int i = 0; i < dim; ++i)
+        (*t)[i] = *in++;
+    s.bond_work     = *in++;
+    s.friction_work = *in++;
+    s.viscous_work  = *in++;
+    return s;
+  }
+
+
+
+  template <int dim>
+  typename CohesiveInterfaces<dim>::Snapshot
+  CohesiveInterfaces<dim>::snapshot(const MPI_Comm comm) const
+  {
+    // Flat records: cell id (4), face, number of points, then per point
+    // its position, JxW and state.
+    std::vector<double> local;
+    for (const Element &element : elements)
+      {
+        for (const unsigned int word : element.cell.template to_binary<dim>())
+          local.push_back(word);
+        local.push_back(element.face);
+        local.push_back(element.points.size());
+        for (unsigned int q = 0; q < element.points.size(); ++q)
+          {
+            for (unsigned int d = 0; d < dim; ++d)
+              local.push_back(element.unit_points[q][d]);
+            local.push_back(element.JxW[q]);
+            pack(element.converged[q], local);
+          }
+      }
+    Snapshot result;
+    for (const auto &part : Utilities::MPI::all_gather(comm, local))
+      for (std::size_t i = 0; i < part.size();)
+        {
+          typename CellId::binary_type id;
+          for (auto &word : id)
+            word = static_cast<unsigned int>(part[i++]);
+          typename Snapshot::Face face;
+          face.cell              = CellId(id);
+          face.face              = static_cast<unsigned int>(part[i++]);
+          const unsigned int n_q = static_cast<unsigned int>(part[i++]);
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              Point<dim> p;
+              for (unsigned int d = 0; d < dim; ++d)
+                p[d] = part[i++];
+              face.unit_points.push_back(p);
+              face.JxW.push_back(part[i++]);
+              face.states.insert(face.states.end(),
+                                 part.begin() + i,
+                                 part.begin() + i + state_size());
+              i += state_size();
+            }
+          result.index[{face.cell, face.face}] = result.faces.size();
+          result.faces.push_back(std::move(face));
+        }
+    return result;
+  }
+
+
+
+  template <int dim>
+  void
+  CohesiveInterfaces<dim>::set_point_regions(const unsigned int n_points)
+  {
+    const Quadrature<1> rule = data.lobatto ?
+                                 Quadrature<1>(QGaussLobatto<1>(n_points)) :
+                                 Quadrature<1>(QGauss<1>(n_points));
+    rule_points.clear();
+    rule_bounds = {0.};
+    for (unsigned int i = 0; i < rule.size(); ++i)
+      {
+        rule_points.push_back(rule.point(i)[0]);
+        rule_bounds.push_back(rule_bounds.back() + rule.weight(i));
+      }
+    rule_bounds.back() = 1.;
+  }
+
+
+
+  template <int dim>
+  std::array<std::pair<double, double>, dim>
+  CohesiveInterfaces<dim>::point_region(const Point<dim>  &unit,
+                                        const unsigned int face,
+                                        const Point<dim>  &lower,
+                                        const double       size) const
+  {
+    std::array<std::pair<double, double>, dim> region;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        if (d == face / 2) // across the face: no extent
+          {
+            region[d] = {0., 1.};
+            continue;
+          }
+        unsigned int i = 0;
+        for (unsigned int k = 1; k < rule_points.size(); ++k)
+          if (std::abs(unit[d] - rule_points[k])
+              < std::abs(unit[d] - rule_points[i]))
+            i = k;
+        region[d] = {lower[d] + size * rule_bounds[i],
+                     lower[d] + size * rule_bounds[i + 1]};
+      }
+    return region;
+  }
+
+
+
+  template <int dim>
+  void
+  CohesiveInterfaces<dim>::transfer_element(Element        &element,
+                                            const Snapshot &old,
+                                            TransferReport &report) const
+  {
+    // The old faces that cover the new one, each with its box in a common
+    // frame: the old lower cell if it is the new one or an ancestor
+    // (kept or refined: a child's face f lies in its parent's face f),
+    // else the new cell (coarsened: its old descendants).
+    struct Source
+    {
+      const typename Snapshot::Face *face;
+      std::pair<Point<dim>, double>  box;
+    };
+    std::vector<Source>           sources;
+    std::pair<Point<dim>, double> box{Point<dim>(), 1.};
+    for (CellId id = element.cell;;)
+      {
+        const auto found = old.index.find({id, element.face});
+        if (found != old.index.end())
+          {
+            sources.push_back({&old.faces[found->second], box});
+            box = descendant_box<dim>(id, element.cell);
+            break;
+          }
+        if (id.get_child_indices().size() == 0)
+          break;
+        id = parent_id(id);
+      }
+    if (sources.empty())
+      for (const auto &face : old.faces)
+        if (face.face == element.face && element.cell.is_ancestor_of(face.cell))
+          sources.push_back(
+            {&face, descendant_box<dim>(element.cell, face.cell)});
+    AssertThrow(!sources.empty(),
+                ExcMessage("a new interface element has no old face to take "
+                           "its history from"));
+    const bool coarsened
+      = element.cell != sources[0].face->cell
+        && element.cell.is_ancestor_of(sources[0].face->cell);
+    (coarsened ? report.aggregated : report.injected) += element.points.size();
+
+    // Each point owns the region of its face that its weight covers. A new
+    // point takes the densities of dissipated work of the old regions it
+    // overlaps, weighted by the overlap (so the totals are kept exactly on
+    // affine faces), and the history of the most damaged of them (so
+    // damage never decreases).
+    for (unsigned int q = 0; q < element.points.size(); ++q)
+      {
+        const auto   region  = point_region(element.unit_points[q],
+                                         element.face,
+                                         box.first,
+                                         box.second);
+        const double measure = overlap<dim>(region, region);
+        PointState   merged;
+        double       fracture = 0, friction = 0, viscous = 0, worst = -1;
+        for (const Source &source : sources)
+          for (unsigned int j = 0; j < source.face->JxW.size(); ++j)
+            {
+              const double w
+                = overlap<dim>(region,
+                               point_region(source.face->unit_points[j],
+                                            element.face,
+                                            source.box.first,
+                                            source.box.second))
+                  / measure;
+              if (w < 1e-12)
+                continue;
+              const PointState s
+                = unpack(source.face->states.data() + j * state_size());
+              const double stored = stored_energy(s);
+              fracture
+                += w
+                   * (s.history.debonded ? s.bond_work : s.bond_work - stored);
+              friction += w
+                          * (s.history.debonded ? s.friction_work - stored :
+                                                  s.friction_work);
+              viscous += w * s.viscous_work;
+              const double rank = (s.history.debonded ? 2. : 0.) + damage(s);
+              if (rank > worst)
+                worst = rank, merged = s;
+            }
+        // Densities of what was dissipated; rebase() adds what the new
+        // gap stores.
+        merged.bond_work     = fracture;
+        merged.friction_work = friction;
+        merged.viscous_work  = viscous;
+        element.converged[q] = merged;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  CohesiveInterfaces<dim>::rebase(Element        &element,
+                                  const Vector   &solution,
+                                  TransferReport &report)
+  {
+    Tensor<2, dim> tangent;
+    for (unsigned int q = 0; q < element.points.size(); ++q)
+      {
+        Tensor<1, dim> global_gap;
+        for (unsigned int k = 0; k < element.dofs.size(); ++k)
+          global_gap[element.component[k]]
+            += element.shape(q, k) * solution(element.dofs[k]);
+        PointState &state = element.converged[q];
+        // From the new gap itself: no viscous traction, no work.
+        state.gap                  = element.frame[q] * global_gap;
+        const PointState evaluated = evaluate(state, state.gap, tangent);
+        if (evaluated.history.debonded != state.history.debonded
+            || evaluated.history.kappa > state.history.kappa)
+          ++report.beyond_history;
+        state.traction = evaluated.traction;
+        state.viscous  = 0;
+        (state.history.debonded ? state.friction_work : state.bond_work)
+          += stored_energy(state);
+        element.trial[q] = state;
+      }
+  }
+
+
+
+  template <int dim>
+  typename CohesiveInterfaces<dim>::TransferReport
+  CohesiveInterfaces<dim>::transfer(const Snapshot &old,
+                                    const Vector   &solution,
+                                    const MPI_Comm  comm)
+  {
+    TransferReport report;
+    Tensor<1, dim> net_force;
+    double         force_sum = 0;
+    for (Element &element : elements)
+      {
+        // setup() has put the pre-crack in: a point inside it stays
+        // debonded whatever its old neighbours were.
+        const std::vector<PointState> seeded = element.converged;
+        transfer_element(element, old, report);
+        for (unsigned int q = 0; q < seeded.size(); ++q)
+          if (seeded[q].history.debonded)
+            element.converged[q].history = seeded[q].history;
+        rebase(element, solution, report);
+        // Both faces' shape functions at the paired points: the forces on
+        // the two sides cancel if the new faces match.
+        for (unsigned int q = 0; q < seeded.size(); ++q)
+          {
+            const Tensor<1, dim> traction = transpose(element.frame[q])
+                                            * element.converged[q].traction
+                                            * element.JxW[q];
+            for (unsigned int k = 0; k < element.dofs.size(); ++k)
+              {
+                const double f
+                  = element.shape(q, k) * traction[element.component[k]];
+                net_force[element.component[k]] += f;
+                force_sum += std::abs(f);
+              }
+          }
+      }
+    for (unsigned long *count :
+         {&report.injected, &report.aggregated, &report.beyond_history})
+      *count = Utilities::MPI::sum(*count, comm);
+    for (unsigned int d = 0; d < dim; ++d)
+      net_force[d] = Utilities::MPI::sum(net_force[d], comm);
+    force_sum              = Utilities::MPI::sum(force_sum, comm);
+    report.force_imbalance = force_sum > 0 ? net_force.norm() / force_sum : 0;
+    return report;
+  }
+
+  template class CohesiveInterfaces<2>;
+  template class CohesiveInterfaces<3>;
+} // namespace amfrac

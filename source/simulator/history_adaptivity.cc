@@ -1,0 +1,220 @@
+// Adaptivity during the load history of a scene with cohesive interfaces:
+// when to refine (every N steps, the seed's ZZ threshold, the process-zone
+// rule), and the transfer of the converged state to the new mesh (the
+// seed's tau_2 for the displacement, tau_1 for the interface history).
+#include <amfrac/simulator/simulator.h>
+#include <deal.II/numerics/rtree.h>
+#include <deal.II/numerics/solution_transfer.h>
+
+namespace amfrac
+{
+  namespace
+  {
+    namespace bgi = boost::geometry::index;
+
+    /** The largest extent of @p cell along the plies (every reference
+     * direction but the last, which is the laminate's thickness). */
+    template <typename CellIterator>
+    double
+    in_plane_size(const CellIterator &cell)
+    {
+      constexpr int dim = CellIterator::AccessorType::dimension;
+      double        h   = 0;
+      for (unsigned int a = 0; a + 1 < dim; ++a)
+        h = std::max(h, cell->extent_in_direction(a));
+      return h;
+    }
+
+    template <typename Ledger, typename Member>
+    double
+    total(const std::vector<Ledger> &ledger, const Member member)
+    {
+      double sum = 0;
+      for (const Ledger &l : ledger)
+        sum += l.*member;
+      return sum;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  std::vector<double>
+  Simulator<dim>::process_zone_lengths() const
+  {
+    const auto         &c = parameters.cohesive;
+    std::vector<double> lengths;
+    for (const unsigned int k : interfaces->interfaces())
+      {
+        const double E_zz = 1. / invert(plies[k].stiffness_3d)[2][2][2][2];
+        lengths.push_back(0.88 * E_zz * c.G_Ic
+                          / (c.normal_strength * c.normal_strength));
+      }
+    return lengths;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::mark_process_zone(const bool coarsen)
+  {
+    const unsigned int n = parameters.adaptivity.process_zone_elements;
+
+    const auto front = interfaces->front_points(process_zone_lengths(), comm);
+    if (front.empty())
+      return;
+    const auto tree = pack_rtree(front);
+    // Per active cell: its distance to the nearest front point, in units
+    // of that point's reach, and whether it is coarser than the rule asks.
+    std::vector<std::pair<double, bool>> where;
+    bool                                 needed = false;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      {
+        std::vector<std::pair<Point<dim>, double>> closest;
+        tree.query(bgi::nearest(cell->center(), 1),
+                   std::back_inserter(closest));
+        const double reach = closest[0].second;
+        const double distance
+          = cell->center().distance(closest[0].first) - 0.5 * cell->diameter();
+        const bool coarse = in_plane_size(cell) > reach / n * (1 + 1e-9);
+        where.emplace_back(distance / reach, coarse);
+        needed = needed || (coarse && distance <= reach);
+      }
+    // Only when a cell within l_cz is too coarse; then the band of 2 l_cz
+    // is refined, so that the front moves about l_cz before the next
+    // change, and cells beyond 3 l_cz are coarsened with it (each change
+    // of the mesh costs a transfer, a new matrix and a factorization).
+    if (!needed)
+      return;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      {
+        const auto [distance, coarse] = where[cell->active_cell_index()];
+        if (distance <= 2 && coarse)
+          {
+            cell->clear_coarsen_flag();
+            cell->set_refine_flag();
+          }
+        else if (coarsen && distance > 3 && !cell->refine_flag_set())
+          cell->set_coarsen_flag();
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::adapt_during_history(const unsigned int step, const double t)
+  {
+    const auto &a = parameters.adaptivity;
+    bool        by_estimate
+      = a.refine_every > 0 && step > 0 && step % a.refine_every == 0;
+    if (step > 0 && (by_estimate || a.error_threshold > 0))
+      {
+        relevant_solution = newton->converged_solution;
+        estimate_error(t);
+        by_estimate = by_estimate
+                      || (a.error_threshold > 0
+                          && last_zz.relative() > a.error_threshold);
+      }
+    // The process-zone rule refines one level per pass until the fronts
+    // have their elements; every pass moves the state.
+    for (unsigned int pass = 0; pass < 10; ++pass)
+      {
+        for (const auto &cell : triangulation.active_cell_iterators())
+          {
+            cell->clear_refine_flag();
+            cell->clear_coarsen_flag();
+          }
+        if (pass == 0 && by_estimate)
+          mark_by_estimate();
+        if (a.process_zone_elements > 0)
+          mark_process_zone(!a.by_estimator());
+        if (!limit_flags() || !interfaces->match_flags(triangulation))
+          break;
+
+        refine_and_transfer(step, t);
+        if (a.process_zone_elements == 0)
+          return;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::refine_and_transfer(const unsigned int step, const double t)
+  {
+    using Ledger = typename CohesiveInterfaces<dim>::Ledger;
+    typename CohesiveInterfaces<dim>::TransferReport report;
+    std::vector<Ledger>                              before, after;
+    {
+      TimerOutput::Scope scope(timer, "refine and transfer");
+      before                          = interfaces->ledger(comm);
+      const auto             snapshot = interfaces->snapshot(comm);
+      dealii::Vector<double> copies;
+      dof_layer.expand_all(dof_layer.replicate(newton->converged_solution),
+                           copies);
+      SolutionTransfer<dim, dealii::Vector<double>> displacement(
+        dof_layer.copy_handler());
+      displacement.prepare_for_coarsening_and_refinement(copies);
+      triangulation.execute_coarsening_and_refinement();
+      setup_after_refinement();
+      interfaces->setup(dof_layer, parameters.boundary_conditions.constants);
+      dealii::Vector<double> new_copies(dof_layer.n_copies());
+      displacement.interpolate(copies, new_copies);
+
+      // A new Newton state on the new mesh, with the run's totals.
+      const double external_work = newton->external_work;
+      setup_newton();
+      if (parameters.nonlinear_solver.dissipation_control)
+        setup_dissipation_control();
+      newton->external_work = external_work;
+      dof_layer.gather(new_copies, newton->converged_solution);
+      make_constraints(t, constraints, false);
+      constraints.distribute(newton->converged_solution);
+      relevant_solution = newton->converged_solution;
+      report   = interfaces->transfer(snapshot, relevant_solution, comm);
+      solution = newton->converged_solution;
+      // The reactions of the transferred state start the trapezoidal rule
+      // of the external work of the next step.
+      assembler.assemble_load(loads, t, newton->external_load);
+      update_residual(solution, nullptr);
+      newton->previous_residual = newton->residual;
+      newton->previous_load     = newton->external_load;
+      newton->converged_force   = load_force(newton->residual);
+      solver_ready              = false;
+      after                     = interfaces->ledger(comm);
+    }
+    if (!cycle_summary)
+      cycle_summary = std::make_unique<History>(
+        parameters.output.directory + "/adaptivity.csv",
+        Utilities::MPI::this_mpi_process(comm) == 0);
+    cycle_summary->add_row(
+      {{"step", step},
+       {"t", t},
+       {"cells", triangulation.n_global_active_cells()},
+       {"unknowns", dof_layer.n_dofs()},
+       {"dissipated_before", total(before, &Ledger::dissipated)},
+       {"dissipated_after", total(after, &Ledger::dissipated)},
+       {"debonded_before", total(before, &Ledger::debonded)},
+       {"debonded_after", total(after, &Ledger::debonded)},
+       {"damaged_before", total(before, &Ledger::damaged)},
+       {"damaged_after", total(after, &Ledger::damaged)},
+       {"injected_points", report.injected},
+       {"aggregated_points", report.aggregated},
+       {"beyond_history", report.beyond_history},
+       {"interface_force_imbalance", report.force_imbalance}});
+    pcout << "  adapted after step " << step << ": "
+          << triangulation.n_global_active_cells() << " cells, "
+          << dof_layer.n_dofs() << " unknowns; interface history of "
+          << report.injected << " points injected, " << report.aggregated
+          << " aggregated; dissipated " << total(before, &Ledger::dissipated)
+          << " -> " << total(after, &Ledger::dissipated) << std::endl;
+  }
+
+  template void
+  Simulator<2>::adapt_during_history(const unsigned int, const double);
+  template void
+  Simulator<3>::adapt_during_history(const unsigned int, const double);
+} // namespace amfrac
