@@ -66,6 +66,29 @@ namespace amfrac
       frame[2] = cross_product_3d(n, t1);
       return frame;
     }
+
+    /** @p cell in the reference coordinates of its level-0 ancestor (any
+     * refinement case, isotropic or anisotropic). */
+    template <int dim>
+    std::pair<Point<dim>, Point<dim>>
+    coarse_cell_box(typename Triangulation<dim>::cell_iterator cell)
+    {
+      Point<dim> lower, upper;
+      for (unsigned int d = 0; d < dim; ++d)
+        upper[d] = 1;
+      while (cell->level() > 0)
+        {
+          const auto         parent = cell->parent();
+          const unsigned int child  = parent->child_iterator_to_index(cell);
+          const auto         cut    = parent->refinement_case();
+          lower
+            = GeometryInfo<dim>::child_to_cell_coordinates(lower, child, cut);
+          upper
+            = GeometryInfo<dim>::child_to_cell_coordinates(upper, child, cut);
+          cell = parent;
+        }
+      return {lower, upper};
+    }
   } // namespace
 
 
@@ -149,6 +172,7 @@ namespace amfrac
     Element element;
     element.cell      = cell->id();
     element.face      = face;
+    element.box       = coarse_cell_box<dim>(cell);
     element.interface = std::lower_bound(data.interfaces.begin(),
                                          data.interfaces.end(),
                                          std::min(cell->material_id(),

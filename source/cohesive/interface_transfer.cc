@@ -7,34 +7,13 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/numerics/rtree.h>
 #include <limits>
+#include <numeric>
 
 namespace amfrac
 {
   namespace
   {
     namespace bgi = boost::geometry::index;
-
-    /** The box of cell @p descendant in the reference coordinates of its
-     * ancestor (or itself) @p ancestor: lower corner and edge length (the
-     * isotropic children of a hypercube are numbered lexicographically,
-     * bit d of the child index is the upper half along axis d). */
-    template <int dim>
-    std::pair<Point<dim>, double>
-    descendant_box(const CellId &ancestor, const CellId &descendant)
-    {
-      const auto outer = ancestor.get_child_indices();
-      const auto inner = descendant.get_child_indices();
-      Point<dim> lower;
-      double     size = 1;
-      for (unsigned int l = outer.size(); l < inner.size(); ++l)
-        {
-          size *= 0.5;
-          for (unsigned int d = 0; d < dim; ++d)
-            if ((inner[l] >> d) & 1)
-              lower[d] += size;
-        }
-      return {lower, size};
-    }
 
     template <int dim>
     double
@@ -49,14 +28,6 @@ namespace amfrac
       return measure;
     }
 
-    CellId
-    parent_id(const CellId &id)
-    {
-      const auto children = id.get_child_indices();
-      return CellId(id.get_coarse_cell_id(),
-                    std::vector<std::uint8_t>(children.begin(),
-                                              children.end() - 1));
-    }
   } // namespace
 
 
@@ -90,12 +61,19 @@ namespace amfrac
           if (element.interface == k)
             for (unsigned int q = 0; q < element.points.size(); ++q)
               {
+                // On a face longer than l_cz the nearest point across the
+                // front may be farther than l_cz: look as far as the face
+                // is long, so that a coarse mesh sees its fronts.
+                const double face_size = std::pow(
+                  std::accumulate(element.JxW.begin(), element.JxW.end(), 0.),
+                  1. / (dim - 1));
                 if (element.converged[q].history.debonded)
                   continue;
                 std::vector<Point<dim>> closest;
                 tree.query(bgi::nearest(element.points[q], 1),
                            std::back_inserter(closest));
-                if (element.points[q].distance(closest[0]) <= reach[k])
+                if (element.points[q].distance(closest[0])
+                    <= std::max(reach[k], face_size))
                   local.emplace_back(element.points[q], reach[k]);
               }
       }
@@ -133,10 +111,16 @@ namespace amfrac
               if (!is_cohesive(cell, f) || !cell->neighbor(f)->is_active())
                 continue;
               const auto neighbor = cell->neighbor(f);
-              if (cell->refine_flag_set() && !neighbor->refine_flag_set())
+              // The same refinement case on both sides (anisotropic cases
+              // included): the union of the two.
+              const auto cut = cell->refine_flag_set();
+              if (cut != neighbor->refine_flag_set())
                 {
+                  const auto both = cut | neighbor->refine_flag_set();
+                  cell->clear_coarsen_flag();
                   neighbor->clear_coarsen_flag();
-                  neighbor->set_refine_flag();
+                  cell->set_refine_flag(both);
+                  neighbor->set_refine_flag(both);
                   changed = true;
                 }
               if (cell->coarsen_flag_set() != neighbor->coarsen_flag_set())
@@ -212,6 +196,11 @@ namespace amfrac
         for (const unsigned int word : element.cell.template to_binary<dim>())
           local.push_back(word);
         local.push_back(element.face);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            local.push_back(element.box.first[d]);
+            local.push_back(element.box.second[d]);
+          }
         local.push_back(element.points.size());
         for (unsigned int q = 0; q < element.points.size(); ++q)
           {
@@ -229,8 +218,13 @@ namespace amfrac
           for (auto &word : id)
             word = static_cast<unsigned int>(part[i++]);
           typename Snapshot::Face face;
-          face.cell              = CellId(id);
-          face.face              = static_cast<unsigned int>(part[i++]);
+          face.cell = CellId(id);
+          face.face = static_cast<unsigned int>(part[i++]);
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              face.box.first[d]  = part[i++];
+              face.box.second[d] = part[i++];
+            }
           const unsigned int n_q = static_cast<unsigned int>(part[i++]);
           for (unsigned int q = 0; q < n_q; ++q)
             {
@@ -244,7 +238,8 @@ namespace amfrac
                                  part.begin() + i + state_size());
               i += state_size();
             }
-          result.index[{face.cell, face.face}] = result.faces.size();
+          result.index[{face.cell.get_coarse_cell_id(), face.face}].push_back(
+            result.faces.size());
           result.faces.push_back(std::move(face));
         }
     return result;
@@ -273,10 +268,10 @@ namespace amfrac
 
   template <int dim>
   std::array<std::pair<double, double>, dim>
-  CohesiveInterfaces<dim>::point_region(const Point<dim>  &unit,
-                                        const unsigned int face,
-                                        const Point<dim>  &lower,
-                                        const double       size) const
+  CohesiveInterfaces<dim>::point_region(
+    const Point<dim>                        &unit,
+    const unsigned int                       face,
+    const std::pair<Point<dim>, Point<dim>> &box) const
   {
     std::array<std::pair<double, double>, dim> region;
     for (unsigned int d = 0; d < dim; ++d)
@@ -291,8 +286,9 @@ namespace amfrac
           if (std::abs(unit[d] - rule_points[k])
               < std::abs(unit[d] - rule_points[i]))
             i = k;
-        region[d] = {lower[d] + size * rule_bounds[i],
-                     lower[d] + size * rule_bounds[i + 1]};
+        const double size = box.second[d] - box.first[d];
+        region[d]         = {box.first[d] + size * rule_bounds[i],
+                             box.first[d] + size * rule_bounds[i + 1]};
       }
     return region;
   }
@@ -305,41 +301,46 @@ namespace amfrac
                                             const Snapshot &old,
                                             TransferReport &report) const
   {
-    // The old faces that cover the new one, each with its box in a common
-    // frame: the old lower cell if it is the new one or an ancestor
-    // (kept or refined: a child's face f lies in its parent's face f),
-    // else the new cell (coarsened: its old descendants).
-    struct Source
-    {
-      const typename Snapshot::Face *face;
-      std::pair<Point<dim>, double>  box;
+    // The old faces that overlap the new one, found in the reference
+    // coordinates of their common coarse cell (kept, refined or coarsened
+    // faces, any refinement case): same coarse cell, same face number (a
+    // child's face f lies in its parent's face f), same position across
+    // the face, overlapping along it.
+    const unsigned int normal = element.face / 2;
+    const auto position = [&](const std::pair<Point<dim>, Point<dim>> &box) {
+      return element.face % 2 == 0 ? box.first[normal] : box.second[normal];
     };
-    std::vector<Source>           sources;
-    std::pair<Point<dim>, double> box{Point<dim>(), 1.};
-    for (CellId id = element.cell;;)
-      {
-        const auto found = old.index.find({id, element.face});
-        if (found != old.index.end())
-          {
-            sources.push_back({&old.faces[found->second], box});
-            box = descendant_box<dim>(id, element.cell);
-            break;
-          }
-        if (id.get_child_indices().size() == 0)
-          break;
-        id = parent_id(id);
-      }
-    if (sources.empty())
-      for (const auto &face : old.faces)
-        if (face.face == element.face && element.cell.is_ancestor_of(face.cell))
-          sources.push_back(
-            {&face, descendant_box<dim>(element.cell, face.cell)});
+    std::vector<const typename Snapshot::Face *> sources;
+    const auto                                   candidates
+      = old.index.find({element.cell.get_coarse_cell_id(), element.face});
+    if (candidates != old.index.end())
+      for (const std::size_t i : candidates->second)
+        {
+          const auto &face = old.faces[i];
+          bool        overlaps
+            = std::abs(position(face.box) - position(element.box)) < 1e-12;
+          for (unsigned int d = 0; d < dim; ++d)
+            if (d != normal)
+              overlaps
+                = overlaps
+                  && std::min(face.box.second[d], element.box.second[d])
+                         - std::max(face.box.first[d], element.box.first[d])
+                       > 1e-12;
+          if (overlaps)
+            sources.push_back(&face);
+        }
     AssertThrow(!sources.empty(),
                 ExcMessage("a new interface element has no old face to take "
                            "its history from"));
-    const bool coarsened
-      = element.cell != sources[0].face->cell
-        && element.cell.is_ancestor_of(sources[0].face->cell);
+    // Coarsened: the old faces are smaller than the new one.
+    const auto area = [&](const std::pair<Point<dim>, Point<dim>> &box) {
+      double a = 1;
+      for (unsigned int d = 0; d < dim; ++d)
+        if (d != normal)
+          a *= box.second[d] - box.first[d];
+      return a;
+    };
+    const bool coarsened = area(sources[0]->box) < area(element.box) - 1e-12;
     (coarsened ? report.aggregated : report.injected) += element.points.size();
 
     // Each point owns the region of its face that its weight covers. A new
@@ -349,27 +350,23 @@ namespace amfrac
     // damage never decreases).
     for (unsigned int q = 0; q < element.points.size(); ++q)
       {
-        const auto   region  = point_region(element.unit_points[q],
-                                         element.face,
-                                         box.first,
-                                         box.second);
+        const auto region
+          = point_region(element.unit_points[q], element.face, element.box);
         const double measure = overlap<dim>(region, region);
         PointState   merged;
         double       fracture = 0, friction = 0, viscous = 0, worst = -1;
-        for (const Source &source : sources)
-          for (unsigned int j = 0; j < source.face->JxW.size(); ++j)
+        for (const auto *source : sources)
+          for (unsigned int j = 0; j < source->JxW.size(); ++j)
             {
-              const double w
-                = overlap<dim>(region,
-                               point_region(source.face->unit_points[j],
-                                            element.face,
-                                            source.box.first,
-                                            source.box.second))
-                  / measure;
+              const double w = overlap<dim>(region,
+                                            point_region(source->unit_points[j],
+                                                         element.face,
+                                                         source->box))
+                               / measure;
               if (w < 1e-12)
                 continue;
               const PointState s
-                = unpack(source.face->states.data() + j * state_size());
+                = unpack(source->states.data() + j * state_size());
               const double stored = stored_energy(s);
               fracture
                 += w

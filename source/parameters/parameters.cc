@@ -1420,10 +1420,12 @@ namespace amfrac
                         "cohesive-zone length l_cz = 0.88 E_zz G_Ic / "
                         "sigma_N^2 [mm] around every delamination front, "
                         "i.e. within l_cz of the bonded points that lie "
-                        "within l_cz of a damaged or debonded point; cells "
-                        "farther than 3 l_cz are coarsened (never below "
-                        "the initial mesh). Checked after every converged "
-                        "step and before the first (0: off).");
+                        "within l_cz of a damaged or debonded point: then "
+                        "cells within 2 l_cz are refined (along the plies "
+                        "in 2D, isotropically in 3D) and cells farther than "
+                        "3 l_cz coarsened (never below the initial mesh). "
+                        "Checked after every converged step and before the "
+                        "first (0: off).");
       prm.leave_subsection();
     }
 

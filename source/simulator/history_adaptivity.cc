@@ -87,13 +87,22 @@ namespace amfrac
     // of the mesh costs a transfer, a new matrix and a factorization).
     if (!needed)
       return;
+    // In 2D along the plies only (cut_x): the rule is about the in-plane
+    // size, and refining through the thickness as well multiplies the
+    // unknowns and the direct solver's fill for nothing. In 3D cut_xy
+    // makes deal.II refine some neighbours through the thickness, and the
+    // hanging-node constraints of the copy layer then form a cycle on the
+    // DCB (found, not understood yet): 3D refines isotropically.
+    const RefinementCase<dim> along_plies
+      = dim == 2 ? RefinementCase<dim>::cut_x :
+                   RefinementCase<dim>::isotropic_refinement;
     for (const auto &cell : triangulation.active_cell_iterators())
       {
         const auto [distance, coarse] = where[cell->active_cell_index()];
         if (distance <= 2 && coarse)
           {
             cell->clear_coarsen_flag();
-            cell->set_refine_flag();
+            cell->set_refine_flag(along_plies);
           }
         else if (coarsen && distance > 3 && !cell->refine_flag_set())
           cell->set_coarsen_flag();

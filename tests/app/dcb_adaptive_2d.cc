@@ -3,10 +3,11 @@
 // crack front by the process-zone rule, coarsened behind it) against the
 // uniformly fine mesh of prm/dcb_2d.prm (0.25 mm everywhere), both to an
 // opening of 3 mm (past the peak, about 8 mm of crack growth). Checks:
-// - the peak load within 1 % of the uniform mesh's, and the load at two
-//   openings on the propagation branch within 2 % (the branch is a sawtooth
-//   of single debonding points on either mesh);
-// - at most half the unknowns of the uniform mesh at any time;
+// - the peak load within 1 % of the uniform mesh's (the bar), and
+//   the load at two openings on the propagation branch within 0.5 % (the
+//   refinement is along the plies only, so around the front the mesh is the
+//   uniform one: measured 0.002 % and 0.005 %);
+// - at most a third of the unknowns of the uniform mesh at any time;
 // - the mesh follows the front: several changes during the growth, with
 //   coarsening (aggregated interface points) among them;
 // - every transfer keeps the dissipated energy (to round-off: each point
@@ -14,9 +15,9 @@
 //   the overlap-weighted densities of the old regions), never shrinks the
 //   damaged or debonded area, and leaves the two faces of every interface
 //   element in balance (round-off);
-// - the energy balance of the run stays closed to 1 % of the external work
-//   (each transfer adds the difference between the old and the new mesh's
-//   strain energy of the same displacement).
+// - the energy balance of the run stays closed to 0.1 % of the external
+//   work (each transfer adds the difference between the old and the new
+//   mesh's strain energy of the same displacement).
 //
 // usage: app_dcb_adaptive_2d ADAPTIVE.prm UNIFORM.prm WORKDIR
 #include "../check.h"
@@ -95,7 +96,7 @@ main(int argc, char *argv[])
     {
       std::cout << "delta " << delta << ": adaptive " << load_at(a, delta)
                 << " N, uniform " << load_at(u, delta) << " N" << std::endl;
-      CHECK_CLOSE(load_at(a, delta) / load_at(u, delta), 1, 0.02);
+      CHECK_CLOSE(load_at(a, delta) / load_at(u, delta), 1, 0.005);
     }
   const std::size_t last = a.n_rows() - 1;
   std::cout << "crack growth " << a.value(last, "debonded_i0") - 30
@@ -104,7 +105,7 @@ main(int argc, char *argv[])
             << std::endl;
   CHECK(a.value(last, "debonded_i0") > 35);
   CHECK(std::abs(a.value(last, "balance_error"))
-        < 0.01 * a.value(last, "external_work"));
+        < 1e-3 * a.value(last, "external_work"));
 
   const History *changes = adaptive->adaptivity_history();
   CHECK(changes != nullptr);
@@ -141,7 +142,7 @@ main(int argc, char *argv[])
             << std::endl;
   CHECK(during_growth >= 5);
   CHECK(coarsened >= 3);
-  CHECK(most_unknowns <= 0.5 * uniform_unknowns);
+  CHECK(most_unknowns <= uniform_unknowns / 3);
   CHECK(worst_energy < 1e-12);
   CHECK(worst_imbalance < 1e-10);
   return amfrac_test::summary();

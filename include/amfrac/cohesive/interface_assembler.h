@@ -198,15 +198,18 @@ namespace amfrac
     {
       struct Face
       {
-        CellId                  cell;
-        unsigned int            face;
-        std::vector<Point<dim>> unit_points; ///< in the lower cell
-        std::vector<double>     JxW;
-        std::vector<double>     states; ///< packed, state_size() per point
+        CellId                            cell;
+        unsigned int                      face;
+        std::pair<Point<dim>, Point<dim>> box;         ///< as Element::box
+        std::vector<Point<dim>>           unit_points; ///< in the lower cell
+        std::vector<double>               JxW;
+        std::vector<double> states; ///< packed, state_size() per point
       };
       std::vector<Face> faces;
-      /** (lower cell, face) to the position in faces. */
-      std::map<std::pair<CellId, unsigned int>, std::size_t> index;
+      /** (coarse cell, face) to the positions in faces. */
+      std::map<std::pair<types::coarse_cell_id, unsigned int>,
+               std::vector<std::size_t>>
+        index;
     };
 
     Snapshot
@@ -258,8 +261,11 @@ namespace amfrac
     /** Two faces across an interface and what their integration needs. */
     struct Element
     {
-      CellId                               cell;      ///< the lower cell
-      unsigned int                         face;      ///< of the lower cell
+      CellId       cell; ///< the lower cell
+      unsigned int face; ///< of the lower cell
+      /** The lower cell in the reference coordinates of its coarse
+       * (level-0) cell: lower and upper corner. */
+      std::pair<Point<dim>, Point<dim>>    box;
       unsigned int                         interface; ///< position in list
       std::vector<types::global_dof_index> dofs; ///< lower face, upper face
       std::vector<unsigned char>           component;
@@ -339,13 +345,12 @@ namespace amfrac
     unpack(const double *in);
 
     /** The region of the point at @p unit (reference coordinates of a
-     * cell whose face @p face it lies on), mapped into a coarser cell's
-     * coordinates in which that cell is the box @p lower + @p size. */
+     * cell whose face @p face it lies on), in the coordinates of the coarse
+     * cell in which that cell is @p box. */
     std::array<std::pair<double, double>, dim>
-    point_region(const Point<dim>  &unit,
-                 const unsigned int face,
-                 const Point<dim>  &lower,
-                 const double       size) const;
+    point_region(const Point<dim>                        &unit,
+                 const unsigned int                       face,
+                 const std::pair<Point<dim>, Point<dim>> &box) const;
 
     /** The state of every point of @p element from the old faces. */
     void
