@@ -102,7 +102,8 @@ namespace amfrac
         if (distance <= 2 && coarse)
           {
             cell->clear_coarsen_flag();
-            cell->set_refine_flag(along_plies);
+            // With an estimator's flag too: both cuts.
+            cell->set_refine_flag(cell->refine_flag_set() | along_plies);
           }
         else if (coarsen && distance > 3 && !cell->refine_flag_set())
           cell->set_coarsen_flag();
