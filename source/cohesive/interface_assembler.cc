@@ -170,10 +170,10 @@ namespace amfrac
     upper.reinit(neighbor, neighbor_face);
 
     Element element;
-    element.cell      = cell->id();
-    element.face      = face;
-    element.box       = coarse_cell_box<dim>(cell);
-    element.interface = std::lower_bound(data.interfaces.begin(),
+    element.coarse_cell = cell->id().get_coarse_cell_id();
+    element.face        = face;
+    element.box         = coarse_cell_box<dim>(cell);
+    element.interface   = std::lower_bound(data.interfaces.begin(),
                                          data.interfaces.end(),
                                          std::min(cell->material_id(),
                                                   neighbor->material_id()))

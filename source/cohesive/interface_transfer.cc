@@ -188,13 +188,13 @@ namespace amfrac
   typename CohesiveInterfaces<dim>::Snapshot
   CohesiveInterfaces<dim>::snapshot(const MPI_Comm comm) const
   {
-    // Flat records: cell id (4), face, number of points, then per point
-    // its position, JxW and state.
+    // Flat records: coarse cell, face, box (lower and upper corner per
+    // axis), number of points, then per point its reference position, JxW
+    // and state.
     std::vector<double> local;
     for (const Element &element : elements)
       {
-        for (const unsigned int word : element.cell.template to_binary<dim>())
-          local.push_back(word);
+        local.push_back(element.coarse_cell);
         local.push_back(element.face);
         for (unsigned int d = 0; d < dim; ++d)
           {
@@ -214,11 +214,9 @@ namespace amfrac
     for (const auto &part : Utilities::MPI::all_gather(comm, local))
       for (std::size_t i = 0; i < part.size();)
         {
-          typename CellId::binary_type id;
-          for (auto &word : id)
-            word = static_cast<unsigned int>(part[i++]);
+          const auto coarse_cell
+            = static_cast<types::coarse_cell_id>(part[i++]);
           typename Snapshot::Face face;
-          face.cell = CellId(id);
           face.face = static_cast<unsigned int>(part[i++]);
           for (unsigned int d = 0; d < dim; ++d)
             {
@@ -238,8 +236,7 @@ namespace amfrac
                                  part.begin() + i + state_size());
               i += state_size();
             }
-          result.index[{face.cell.get_coarse_cell_id(), face.face}].push_back(
-            result.faces.size());
+          result.index[{coarse_cell, face.face}].push_back(result.faces.size());
           result.faces.push_back(std::move(face));
         }
     return result;
@@ -311,8 +308,7 @@ namespace amfrac
       return element.face % 2 == 0 ? box.first[normal] : box.second[normal];
     };
     std::vector<const typename Snapshot::Face *> sources;
-    const auto                                   candidates
-      = old.index.find({element.cell.get_coarse_cell_id(), element.face});
+    const auto candidates = old.index.find({element.coarse_cell, element.face});
     if (candidates != old.index.end())
       for (const std::size_t i : candidates->second)
         {

@@ -93,9 +93,9 @@ namespace amfrac
     // makes deal.II refine some neighbours through the thickness, and the
     // hanging-node constraints of the copy layer then form a cycle on the
     // DCB (found, not understood yet): 3D refines isotropically.
-    const RefinementCase<dim> along_plies
-      = dim == 2 ? RefinementCase<dim>::cut_x :
-                   RefinementCase<dim>::isotropic_refinement;
+    const RefinementCase<dim> cut = dim == 2 ?
+                                      RefinementCase<dim>::cut_x :
+                                      RefinementCase<dim>::isotropic_refinement;
     for (const auto &cell : triangulation.active_cell_iterators())
       {
         const auto [distance, coarse] = where[cell->active_cell_index()];
@@ -103,7 +103,7 @@ namespace amfrac
           {
             cell->clear_coarsen_flag();
             // With an estimator's flag too: both cuts.
-            cell->set_refine_flag(cell->refine_flag_set() | along_plies);
+            cell->set_refine_flag(cell->refine_flag_set() | cut);
           }
         else if (coarsen && distance > 3 && !cell->refine_flag_set())
           cell->set_coarsen_flag();

@@ -8,7 +8,6 @@
 #include <array>
 #include <deal.II/base/partitioner.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/grid/cell_id.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -192,13 +191,12 @@ namespace amfrac
     bool
     match_flags(Triangulation<dim> &triangulation) const;
 
-    /** The converged interface states of all ranks, keyed by the lower
-     * cell and its face, taken before the mesh changes. */
+    /** The converged interface states of all ranks, with the place of
+     * each lower face in its coarse cell, taken before the mesh changes. */
     struct Snapshot
     {
       struct Face
       {
-        CellId                            cell;
         unsigned int                      face;
         std::pair<Point<dim>, Point<dim>> box;         ///< as Element::box
         std::vector<Point<dim>>           unit_points; ///< in the lower cell
@@ -261,8 +259,9 @@ namespace amfrac
     /** Two faces across an interface and what their integration needs. */
     struct Element
     {
-      CellId       cell; ///< the lower cell
-      unsigned int face; ///< of the lower cell
+      /** The level-0 ancestor of the lower cell. */
+      types::coarse_cell_id coarse_cell;
+      unsigned int          face; ///< of the lower cell
       /** The lower cell in the reference coordinates of its coarse
        * (level-0) cell: lower and upper corner. */
       std::pair<Point<dim>, Point<dim>>    box;
