@@ -156,12 +156,13 @@ namespace amfrac
       std::vector<std::vector<SymmetricTensor<2, dim>>> stress;
       std::vector<std::vector<Point<dim>>>              points;
     };
-    const QGauss<1> through(fe.degree + 1);
-    const auto      flags = update_gradients | update_quadrature_points;
-    Samples superconvergent{FEValues<dim>(fe, QGauss<dim>(fe.degree), flags),
-                            {},
-                            {}};
-    Samples thickness{FEValues<dim>(fe,
+    const QGauss<1>     through(fe.degree + 1);
+    const auto          flags   = update_gradients | update_quadrature_points;
+    const Mapping<dim> &mapping = dofs.get_mapping();
+    Samples             superconvergent{
+      FEValues<dim>(mapping, fe, QGauss<dim>(fe.degree), flags), {}, {}};
+    Samples thickness{FEValues<dim>(mapping,
+                                    fe,
                                     Quadrature<dim>(QGauss<dim - 1>(fe.degree),
                                                     through),
                                     flags),
@@ -334,7 +335,8 @@ namespace amfrac
     constexpr unsigned int n_stress
       = SymmetricTensor<2, dim>::n_independent_components;
     const unsigned int n_nodes = fe.base_element(0).n_dofs_per_cell();
-    FEValues<dim>      values(fe,
+    FEValues<dim>      values(dofs.get_mapping(),
+                         fe,
                          QGauss<dim>(fe.degree + 1),
                          update_values | update_gradients | update_JxW_values);
     std::vector<SymmetricTensor<2, dim>> stress;
@@ -381,9 +383,11 @@ namespace amfrac
     const UpdateFlags flags = update_gradients | update_normal_vectors
                               | update_JxW_values | update_quadrature_points;
     const QGauss<dim - 1> rule(fe.degree + 1);
-    FEFaceValues<dim>     face(fe, rule, flags), other_face(fe, rule, flags);
-    FESubfaceValues<dim>  subface(fe, rule, flags),
-      other_subface(fe, rule, flags);
+    const Mapping<dim>   &mapping = dofs.get_mapping();
+    FEFaceValues<dim>     face(mapping, fe, rule, flags),
+      other_face(mapping, fe, rule, flags);
+    FESubfaceValues<dim> subface(mapping, fe, rule, flags),
+      other_subface(mapping, fe, rule, flags);
     std::vector<SymmetricTensor<2, dim>> mine, theirs;
 
     // int |(s_mine - s_theirs) n|^2 over one face seen from both sides.
@@ -501,7 +505,8 @@ namespace amfrac
                                     const Function<dim>          &exact) const
   {
     const auto                          &fe = dofs.get_fe();
-    FEValues<dim>                        values(fe,
+    FEValues<dim>                        values(dofs.get_mapping(),
+                         fe,
                          QGauss<dim>(fe.degree + 2),
                          update_gradients | update_JxW_values
                            | update_quadrature_points);

@@ -14,12 +14,16 @@ namespace amfrac
   class ElasticAssembler<dim>::Scratch
   {
   public:
-    Scratch(const FiniteElement<dim> &fe, const unsigned int degree)
-      : fe_values(fe,
+    Scratch(const Mapping<dim>       &mapping,
+            const FiniteElement<dim> &fe,
+            const unsigned int        degree)
+      : fe_values(mapping,
+                  fe,
                   QGauss<dim>(degree),
                   update_values | update_gradients | update_quadrature_points
                     | update_JxW_values)
-      , face_values(fe,
+      , face_values(mapping,
+                    fe,
                     QGauss<dim - 1>(degree),
                     update_values | update_quadrature_points
                       | update_normal_vectors | update_JxW_values)
@@ -91,7 +95,8 @@ namespace amfrac
     const auto &fe = dofs.get_fe();
     // 16 x 2 points per direction: the patch edge cuts a face to within a
     // 32nd of its size; the normalization below makes the total exact.
-    FEFaceValues<dim>      fv(fe,
+    FEFaceValues<dim>      fv(dofs.get_mapping(),
+                         fe,
                          QIterated<dim - 1>(QGauss<1>(2), 16),
                          update_values | update_quadrature_points
                            | update_normal_vectors | update_JxW_values);
@@ -196,10 +201,10 @@ namespace amfrac
                                        const CellList   &cells,
                                        Vector           &f) const
   {
-    f                        = 0;
-    const unsigned int     n = dofs.get_fe().n_dofs_per_cell();
-    Scratch                scratch(dofs.get_fe(), quadrature_degree);
-    dealii::Vector<double> cell_f(n);
+    f                    = 0;
+    const unsigned int n = dofs.get_fe().n_dofs_per_cell();
+    Scratch scratch(dofs.get_mapping(), dofs.get_fe(), quadrature_degree);
+    dealii::Vector<double>               cell_f(n);
     std::vector<types::global_dof_index> indices(n);
     for (const auto &cell : cells)
       {
@@ -327,8 +332,8 @@ namespace amfrac
     Matrix                          &matrix) const
   {
     const unsigned int n = dofs.get_fe().n_dofs_per_cell();
-    Scratch            scratch(dofs.get_fe(), quadrature_degree);
-    FullMatrix<double> K(n, n);
+    Scratch scratch(dofs.get_mapping(), dofs.get_fe(), quadrature_degree);
+    FullMatrix<double>                   K(n, n);
     std::vector<types::global_dof_index> indices(n);
     matrix = 0;
     for (const auto &cell : dofs.copy_handler().active_cell_iterators())
@@ -352,10 +357,10 @@ namespace amfrac
     const AffineConstraints<double> &constraints,
     Vector                          &rhs) const
   {
-    const unsigned int     n = dofs.get_fe().n_dofs_per_cell();
-    Scratch                scratch(dofs.get_fe(), quadrature_degree);
-    FullMatrix<double>     K(n, n);
-    dealii::Vector<double> f(n);
+    const unsigned int n = dofs.get_fe().n_dofs_per_cell();
+    Scratch scratch(dofs.get_mapping(), dofs.get_fe(), quadrature_degree);
+    FullMatrix<double>                   K(n, n);
+    dealii::Vector<double>               f(n);
     std::vector<types::global_dof_index> indices(n);
     rhs = 0;
     for (const auto &cell : dofs.copy_handler().active_cell_iterators())
@@ -388,10 +393,10 @@ namespace amfrac
                                           const Vector     &solution,
                                           Vector           &residual) const
   {
-    const unsigned int     n = dofs.get_fe().n_dofs_per_cell();
-    Scratch                scratch(dofs.get_fe(), quadrature_degree);
-    FullMatrix<double>     K(n, n);
-    dealii::Vector<double> f(n), u(n), r(n);
+    const unsigned int n = dofs.get_fe().n_dofs_per_cell();
+    Scratch scratch(dofs.get_mapping(), dofs.get_fe(), quadrature_degree);
+    FullMatrix<double>                   K(n, n);
+    dealii::Vector<double>               f(n), u(n), r(n);
     std::vector<types::global_dof_index> indices(n);
     Energies                             energies;
     residual = 0;
@@ -436,9 +441,10 @@ namespace amfrac
 
     template <int dim>
     FEValues<dim>
-    lobatto_values(const FiniteElement<dim> &fe)
+    lobatto_values(const Mapping<dim> &mapping, const FiniteElement<dim> &fe)
     {
-      return FEValues<dim>(fe,
+      return FEValues<dim>(mapping,
+                           fe,
                            QGaussLobatto<dim>(fe.degree + 1),
                            update_values | update_JxW_values);
     }
@@ -450,9 +456,9 @@ namespace amfrac
   void
   ElasticAssembler<dim>::lumped_mass(Vector &mass) const
   {
-    const auto                          &fe        = dofs.get_fe();
-    FEValues<dim>                        fe_values = lobatto_values(fe);
-    dealii::Vector<double>               m(fe.n_dofs_per_cell());
+    const auto            &fe        = dofs.get_fe();
+    FEValues<dim>          fe_values = lobatto_values(dofs.get_mapping(), fe);
+    dealii::Vector<double> m(fe.n_dofs_per_cell());
     std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
     mass = 0;
     for (const auto &cell : dofs.copy_handler().active_cell_iterators())
@@ -474,7 +480,7 @@ namespace amfrac
     const typename TiedCopyDoFs<dim>::CellIterator &cell,
     FullMatrix<double>                             &K) const
   {
-    Scratch scratch(dofs.get_fe(), quadrature_degree);
+    Scratch scratch(dofs.get_mapping(), dofs.get_fe(), quadrature_degree);
     scratch.fe_values.reinit(cell);
     K.reinit(dofs.get_fe().n_dofs_per_cell(), dofs.get_fe().n_dofs_per_cell());
     cell_matrix(scratch, cell->material_id(), K);
@@ -491,7 +497,7 @@ namespace amfrac
     const unsigned int n  = fe.n_dofs_per_cell();
     FullMatrix<double> K(n, n);
     element_stiffness(cell, K);
-    FEValues<dim> lobatto = lobatto_values(fe);
+    FEValues<dim> lobatto = lobatto_values(dofs.get_mapping(), fe);
     lobatto.reinit(cell);
     dealii::Vector<double> m(n);
     element_lumped_mass(lobatto, plies[cell->material_id()].density, m);

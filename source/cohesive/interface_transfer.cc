@@ -343,7 +343,12 @@ namespace amfrac
     // point takes the densities of dissipated work of the old regions it
     // overlaps, weighted by the overlap (so the totals are kept exactly on
     // affine faces), and the history of the most damaged of them (so
-    // damage never decreases).
+    // damage never decreases). The max rule softens a front whose faces
+    // are refined while damaged: the energy balance then loses a little
+    // at every such change (measured in app/history_triggers). Injecting
+    // the history of the old region that contains the new point halves
+    // that loss but lets the damaged area shrink, which the issue forbids;
+    // the process-zone rule refines ahead of the front and avoids both.
     for (unsigned int q = 0; q < element.points.size(); ++q)
       {
         const auto region

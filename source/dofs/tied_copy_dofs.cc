@@ -4,6 +4,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_dgq.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <stdexcept>
 
@@ -63,6 +64,16 @@ namespace amfrac
   {
     dof_handler.distribute_dofs(*fe);
     const unsigned int n_local = fe->n_dofs_per_cell();
+    if (!mapping)
+      {
+        const auto ids    = dof_handler.get_triangulation().get_manifold_ids();
+        const bool curved = std::any_of(ids.begin(), ids.end(), [](auto id) {
+          return id != numbers::flat_manifold_id;
+        });
+        mapping = curved && fe->degree > 1 ? std::unique_ptr<Mapping<dim>>(
+                    std::make_unique<MappingQ<dim>>(fe->degree)) :
+                                             std::make_unique<MappingQ1<dim>>();
+      }
 
     // Real positions of all copies: copies are tied by position, so no
     // face-orientation logic is needed.

@@ -13,6 +13,7 @@ namespace amfrac
   Laminate::Laminate(const parameters::Geometry  &geometry,
                      const parameters::Materials &materials)
     : plies(geometry.plies)
+    , in_plane(geometry.in_plane)
   {
     ply_boundaries.push_back(0);
     for (unsigned int p = 0; p < plies.size(); ++p)
@@ -35,13 +36,13 @@ namespace amfrac
     template <int dim>
     void
     distort_interior_vertices(Triangulation<dim>            &tria,
-                              const Laminate                &laminate,
+                              const std::vector<double>     &layer_planes,
                               const double                   amount,
                               const Point<dim>              &box,
                               const std::array<double, dim> &h)
     {
       const unsigned int thickness_axis = dim - 1;
-      const double       tol            = 1e-10 * laminate.thickness();
+      const double       tol            = 1e-10 * box.norm();
       std::vector<bool>  moved(tria.n_vertices(), false);
       for (const auto &cell : tria.active_cell_iterators())
         for (const unsigned int v : cell->vertex_indices())
@@ -60,8 +61,8 @@ namespace amfrac
             if (on_boundary)
               continue;
             const bool on_ply_boundary
-              = std::any_of(laminate.ply_boundaries.begin(),
-                            laminate.ply_boundaries.end(),
+              = std::any_of(layer_planes.begin(),
+                            layer_planes.end(),
                             [&](const double z) {
                               return std::abs(p[thickness_axis] - z) < tol;
                             });
@@ -83,24 +84,31 @@ namespace amfrac
                      const Laminate             &laminate,
                      Triangulation<dim>         &triangulation)
   {
+    // A 2D in-plane model meshes the laminate's (x, y) plane with one
+    // (homogenized) material; otherwise the last axis is the thickness
+    // and every ply is a layer of elements with its own material id.
+    const bool                       in_plane = dim == 2 && geometry.in_plane;
+    const bool                       has_width_axis = dim == 3 || in_plane;
     std::vector<std::vector<double>> steps(dim);
     steps[0].assign(geometry.elements_along_length,
                     geometry.length / geometry.elements_along_length);
-    if (dim == 3)
+    if (has_width_axis)
       steps[1].assign(geometry.elements_along_width,
                       geometry.width / geometry.elements_along_width);
-    for (unsigned int p = 0; p < laminate.n_plies(); ++p)
-      steps[dim - 1].insert(steps[dim - 1].end(),
-                            geometry.elements_per_ply,
-                            (laminate.ply_boundaries[p + 1]
-                             - laminate.ply_boundaries[p])
-                              / geometry.elements_per_ply);
+    if (!in_plane)
+      for (unsigned int p = 0; p < laminate.n_plies(); ++p)
+        steps[dim - 1].insert(steps[dim - 1].end(),
+                              geometry.elements_per_ply,
+                              (laminate.ply_boundaries[p + 1]
+                               - laminate.ply_boundaries[p])
+                                / geometry.elements_per_ply);
 
     Point<dim> box;
     box[0] = geometry.length;
-    if (dim == 3)
+    if (has_width_axis)
       box[1] = geometry.width;
-    box[dim - 1] = laminate.thickness();
+    if (!in_plane)
+      box[dim - 1] = laminate.thickness();
     if (geometry.hole_radius > 0)
       make_open_hole_mesh(geometry, laminate, triangulation);
     else
@@ -114,8 +122,10 @@ namespace amfrac
                                             laminate.ply_boundaries.end(),
                                             z);
         cell->set_material_id(
-          std::min<unsigned int>(upper - laminate.ply_boundaries.begin() - 1,
-                                 laminate.n_plies() - 1));
+          in_plane ?
+            0 :
+            std::min<unsigned int>(upper - laminate.ply_boundaries.begin() - 1,
+                                   laminate.n_plies() - 1));
       }
     triangulation.refine_global(geometry.global_refinements);
 
@@ -124,14 +134,19 @@ namespace amfrac
         std::array<double, dim> h;
         const double scale = std::pow(0.5, geometry.global_refinements);
         h[0] = scale * geometry.length / geometry.elements_along_length;
-        if (dim == 3)
+        if (has_width_axis)
           h[1] = scale * geometry.width / geometry.elements_along_width;
-        h[dim - 1] = scale
-                     * *std::min_element(geometry.ply_thickness.begin(),
-                                         geometry.ply_thickness.end())
-                     / geometry.elements_per_ply;
-        distort_interior_vertices<dim>(
-          triangulation, laminate, geometry.mesh_distortion, box, h);
+        if (!in_plane)
+          h[dim - 1] = scale
+                       * *std::min_element(geometry.ply_thickness.begin(),
+                                           geometry.ply_thickness.end())
+                       / geometry.elements_per_ply;
+        distort_interior_vertices<dim>(triangulation,
+                                       in_plane ? std::vector<double>() :
+                                                  laminate.ply_boundaries,
+                                       geometry.mesh_distortion,
+                                       box,
+                                       h);
       }
 
     if (!geometry.refinement_region.empty())
@@ -252,12 +267,37 @@ namespace amfrac
 
   template <>
   void
-  make_open_hole_mesh(const parameters::Geometry &,
+  make_open_hole_mesh(const parameters::Geometry &geometry,
                       const Laminate &,
-                      Triangulation<2> &)
+                      Triangulation<2> &triangulation)
   {
-    throw InputError("Geometry/Hole radius",
-                     "an open hole needs Dimension = 3");
+    if (!geometry.in_plane)
+      throw InputError("Geometry/Hole radius",
+                       "an open hole needs Dimension = 3 or 2D model = "
+                       "in-plane");
+    make_hole_plate_2d(geometry, triangulation);
+    // The same ids and manifolds as the extruded 3D plate: hole = 6 on a
+    // circle, transfinite interpolation in the square around it.
+    const Point<2> center(0.5 * geometry.length, 0.5 * geometry.width);
+    const double   box = 0.5 * std::min(geometry.length, geometry.width);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      {
+        const Point<2> c = cell->center();
+        if (std::abs(c[0] - center[0]) < box
+            && std::abs(c[1] - center[1]) < box)
+          cell->set_all_manifold_ids(1);
+      }
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == 4)
+          {
+            cell->face(f)->set_boundary_id(6);
+            cell->face(f)->set_all_manifold_ids(0);
+          }
+    triangulation.set_manifold(0, SphericalManifold<2>(center));
+    TransfiniteInterpolationManifold<2> tfi;
+    tfi.initialize(triangulation);
+    triangulation.set_manifold(1, tfi);
   }
 
 

@@ -52,8 +52,9 @@ namespace amfrac
       prm.declare_entry("Width",
                         "10",
                         Patterns::Double(),
-                        "Extent along y in mm (3D only; in 2D the width is "
-                        "the out-of-plane direction of plane strain).");
+                        "Extent along y in mm (in a 2D cross-section the "
+                        "width is the out-of-plane direction of plane "
+                        "strain and not meshed).");
       prm.declare_entry("Elements along length",
                         "8",
                         Patterns::Integer(1),
@@ -61,12 +62,12 @@ namespace amfrac
       prm.declare_entry("Elements along width",
                         "8",
                         Patterns::Integer(1),
-                        "Number of elements along y (3D only).");
+                        "Number of elements along y (3D and 2D in-plane).");
       prm.declare_entry("Elements per ply",
                         "1",
                         Patterns::Integer(1),
                         "Number of elements through the thickness of each "
-                        "ply.");
+                        "ply (not used by a 2D in-plane model).");
       prm.declare_entry("Global refinements",
                         "0",
                         Patterns::Integer(0, 10),
@@ -77,17 +78,36 @@ namespace amfrac
                         "Random interior-vertex perturbation as a fraction "
                         "of the element size (for patch tests); ply "
                         "interfaces stay planar.");
-      prm.declare_entry("Hole radius",
-                        "0",
-                        Patterns::Double(0),
-                        "If positive, a circular hole through the thickness "
-                        "at the centre of the plate [mm] (3D only): an open-"
-                        "hole laminate. The in-plane mesh is then deal.II's "
-                        "plate with a hole (the hole on a cylindrical "
-                        "manifold, transfinite interpolation around it), "
-                        "refined until about Elements along width cells "
-                        "span the width; Elements along length is not used. "
-                        "The hole's boundary id is 6 (traction free).");
+      prm.declare_entry("2D model",
+                        "cross-section",
+                        Patterns::Selection("cross-section|in-plane"),
+                        "What a Dimension = 2 scene models. cross-section: "
+                        "the (x, thickness) plane of the laminate in plane "
+                        "strain; plies are layers of elements, ply "
+                        "interfaces can be cohesive; forces and energies "
+                        "are per mm of the out-of-plane width. in-plane: "
+                        "the (x, y) plane of a thin laminate in plane "
+                        "stress; the stacking sequence is homogenized "
+                        "through the thickness by classical lamination "
+                        "theory (membrane stiffness A/h; a symmetric "
+                        "stacking is required so that membrane and bending "
+                        "do not couple); stresses are thickness averages, "
+                        "and the ply stresses (and the Hoffman index of the "
+                        "most loaded ply) follow from the common strain; "
+                        "forces and energies are per mm of laminate "
+                        "thickness. Ignored in 3D.");
+      prm.declare_entry(
+        "Hole radius",
+        "0",
+        Patterns::Double(0),
+        "If positive, a circular hole through the thickness "
+        "at the centre of the plate [mm] (3D, or 2D with 2D "
+        "model = in-plane): an open-hole laminate. The in-plane mesh is then deal.II's "
+        "plate with a hole (the hole on a cylindrical "
+        "manifold, transfinite interpolation around it), "
+        "refined until about Elements along width cells "
+        "span the width; Elements along length is not used. "
+        "The hole's boundary id is 6 (traction free).");
       prm.declare_entry("Refinement region",
                         "",
                         Patterns::Anything(),
@@ -119,6 +139,7 @@ namespace amfrac
       global_refinements    = prm.get_integer("Global refinements");
       mesh_distortion       = prm.get_double("Mesh distortion");
       hole_radius           = prm.get_double("Hole radius");
+      in_plane              = prm.get("2D model") == "in-plane";
       refinement_region     = Utilities::trim(prm.get("Refinement region"));
       region_refinements    = prm.get_integer("Region refinements");
       prm.leave_subsection();
@@ -1307,9 +1328,11 @@ namespace amfrac
     {
       dimension = prm.get_integer("Dimension");
       geometry.parse_parameters(prm);
-      if (dimension == 2 && geometry.hole_radius > 0)
+      geometry.in_plane = geometry.in_plane && dimension == 2;
+      if (dimension == 2 && geometry.hole_radius > 0 && !geometry.in_plane)
         throw InputError("Geometry/Hole radius",
-                         "an open hole needs Dimension = 3");
+                         "an open hole goes through the thickness: it needs "
+                         "Dimension = 3 or Geometry/2D model = in-plane");
       materials.parse_parameters(prm);
       for (const Ply &ply : geometry.plies)
         materials.index_of(ply.material);
@@ -1317,6 +1340,12 @@ namespace amfrac
       boundary_conditions.parse_parameters(prm, dimension);
       linear_solver.parse_parameters(prm);
       cohesive.parse_parameters(prm, geometry.plies.size());
+      if (geometry.in_plane && !cohesive.interfaces.empty())
+        throw InputError("Cohesive interfaces/Interfaces",
+                         "Geometry/2D model = in-plane homogenizes the plies "
+                         "through the thickness, so there are no ply "
+                         "interfaces to make cohesive; use 2D model = "
+                         "cross-section or Dimension = 3");
       nonlinear_solver.parse_parameters(prm);
       time.parse_parameters(prm);
       output.parse_parameters(prm, dimension);

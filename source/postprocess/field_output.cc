@@ -145,7 +145,9 @@ namespace amfrac
     for (const auto &[name, values] : cell_fields)
       if (values.size() == ply.size())
         data_out.add_data_vector(values, name, DataOut<dim>::type_cell_data);
-    data_out.build_patches(dofs.get_fe().degree);
+    data_out.build_patches(dofs.get_mapping(),
+                           dofs.get_fe().degree,
+                           DataOut<dim>::curved_boundary);
 
     const std::string stem
       = parameters.base_name + "-" + Utilities::int_to_string(step, 5);

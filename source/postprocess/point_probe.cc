@@ -15,7 +15,7 @@ namespace amfrac
     : dofs(dofs)
     , plies(plies)
   {
-    const MappingQ1<dim> mapping;
+    const Mapping<dim> &mapping = dofs.get_mapping();
     for (const Point<dim> &p : points)
       {
         std::pair<typename TiedCopyDoFs<dim>::CellIterator, Point<dim>> found;
@@ -54,7 +54,8 @@ namespace amfrac
       {
         if (cells[k]->is_locally_owned())
           {
-            FEValues<dim> fe_values(dofs.get_fe(),
+            FEValues<dim> fe_values(dofs.get_mapping(),
+                                    dofs.get_fe(),
                                     Quadrature<dim>(unit_points[k]),
                                     update_values | update_gradients);
             fe_values.reinit(cells[k]);

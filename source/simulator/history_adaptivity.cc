@@ -119,13 +119,15 @@ namespace amfrac
     const auto &a = parameters.adaptivity;
     bool        by_estimate
       = a.refine_every > 0 && step > 0 && step % a.refine_every == 0;
+    double zz_relative = -1;
     if (step > 0 && (by_estimate || a.error_threshold > 0))
       {
         relevant_solution = newton->converged_solution;
         estimate_error(t);
-        by_estimate = by_estimate
-                      || (a.error_threshold > 0
-                          && last_zz.relative() > a.error_threshold);
+        zz_relative = last_zz.relative();
+        by_estimate
+          = by_estimate
+            || (a.error_threshold > 0 && zz_relative > a.error_threshold);
       }
     // The process-zone rule refines one level per pass until the fronts
     // have their elements; every pass moves the state.
@@ -143,7 +145,10 @@ namespace amfrac
         if (!limit_flags() || !interfaces->match_flags(triangulation))
           break;
 
-        refine_and_transfer(step, t);
+        refine_and_transfer(step,
+                            t,
+                            pass == 0 && by_estimate,
+                            pass == 0 ? zz_relative : -1);
         if (a.process_zone_elements == 0)
           return;
       }
@@ -153,7 +158,10 @@ namespace amfrac
 
   template <int dim>
   void
-  Simulator<dim>::refine_and_transfer(const unsigned int step, const double t)
+  Simulator<dim>::refine_and_transfer(const unsigned int step,
+                                      const double       t,
+                                      const bool         by_estimate,
+                                      const double       zz_relative)
   {
     using Ledger = typename CohesiveInterfaces<dim>::Ledger;
     typename CohesiveInterfaces<dim>::TransferReport report;
@@ -205,6 +213,8 @@ namespace amfrac
        {"t", t},
        {"cells", triangulation.n_global_active_cells()},
        {"unknowns", dof_layer.n_dofs()},
+       {"by_estimate", by_estimate ? 1. : 0.},
+       {"zz_relative_error", zz_relative},
        {"dissipated_before", total(before, &Ledger::dissipated)},
        {"dissipated_after", total(after, &Ledger::dissipated)},
        {"debonded_before", total(before, &Ledger::debonded)},

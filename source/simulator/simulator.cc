@@ -339,7 +339,11 @@ namespace amfrac
                        "no face has Type = displacement, so the laminate "
                        "can move as a rigid body: prescribe displacements "
                        "on at least one face");
-    pcout << "amfrac: " << dim << "D, " << laminate.n_plies() << " plies, ";
+    pcout << "amfrac: " << dim << "D"
+          << (dim == 3          ? "" :
+              laminate.in_plane ? " in-plane (plane stress)" :
+                                  " cross-section (plane strain)")
+          << ", " << laminate.n_plies() << " plies, ";
     if (interfaces)
       pcout << interfaces->interfaces().size() << " cohesive interface(s), ";
     pcout << triangulation.n_active_cells() << " cells, " << dof_layer.n_dofs()
@@ -566,7 +570,7 @@ namespace amfrac
                                 const VectorTools::NormType norm) const
   {
     dealii::Vector<float> cellwise(triangulation.n_active_cells());
-    VectorTools::integrate_difference(MappingQ1<dim>(),
+    VectorTools::integrate_difference(dof_layer.get_mapping(),
                                       dof_layer.copy_handler(),
                                       copy_values,
                                       exact,

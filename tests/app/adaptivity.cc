@@ -15,6 +15,10 @@
 //   Uniform refinement converges at a reduced rate; the adaptive cycles
 //   must reach >= 0.9 of the optimal N^(-p/d) and the same error with
 //   fewer unknowns.
+// open_hole_2d: prm/open_hole_2d.prm (the open-hole laminate in its plane):
+//   the stress concentration against Heywood's formula, the optimal rate
+//   of uniform and ZZ refinement on a smooth problem, and the error target
+//   reaching 1 % with 4x fewer unknowns than uniform refinement.
 #include "../check.h"
 #include "manufactured.h"
 
@@ -25,6 +29,7 @@
 #include <deal.II/base/mpi.h>
 #include <fstream>
 #include <sstream>
+#include <tuple>
 
 using namespace amfrac;
 
@@ -124,14 +129,16 @@ end
     std::vector<double> unknowns;
     std::vector<double> work;
     std::vector<double> zz;
+    /** Stress at the first Output/Point values point (if any). */
+    std::vector<double> probe_xx, probe_yy;
   };
 
-  /** Every cycle of the peel scene with @p settings appended to its
+  /** Every cycle of a 2D scene with @p settings appended to its
    * Adaptivity subsection. */
   Run
-  peel(const std::string &scene_file,
-       const std::string &degree,
-       const std::string &settings)
+  cycles(const std::string &scene_file,
+         const std::string &degree,
+         const std::string &settings)
   {
     std::ifstream      in(scene_file);
     std::ostringstream text;
@@ -153,10 +160,16 @@ end
       for (unsigned int k = 0; std::getline(names, cell, ','); ++k)
         if (cell == name)
           return k;
-      throw std::runtime_error("no column " + name);
+      return numbers::invalid_unsigned_int;
     };
     const unsigned int c_unknowns = column("unknowns"),
-                       c_work = column("load_work"), c_zz = column("zz_error");
+                       c_work = column("load_work"), c_zz = column("zz_error"),
+                       c_xx = column("p0_stress_xx"),
+                       c_yy = column("p0_stress_yy");
+    if (c_unknowns == numbers::invalid_unsigned_int
+        || c_work == numbers::invalid_unsigned_int
+        || c_zz == numbers::invalid_unsigned_int)
+      throw std::runtime_error("adaptivity.csv lacks a column");
     while (std::getline(csv, line))
       {
         std::istringstream  cells(line);
@@ -167,6 +180,11 @@ end
         run.unknowns.push_back(row[c_unknowns]);
         run.work.push_back(row[c_work]);
         run.zz.push_back(row[c_zz]);
+        if (c_xx != numbers::invalid_unsigned_int)
+          {
+            run.probe_xx.push_back(row[c_xx]);
+            run.probe_yy.push_back(row[c_yy]);
+          }
       }
     return run;
   }
@@ -190,10 +208,10 @@ end
   void
   singular(const std::string &scene_file, const bool root)
   {
-    const Run    reference = peel(scene_file,
-                               "2",
-                               "set Refinement cycles = 9\n"
-                                  "set Refine fraction = 0.6");
+    const Run    reference = cycles(scene_file,
+                                 "2",
+                                 "set Refinement cycles = 9\n"
+                                    "set Refine fraction = 0.6");
     const double W         = reference.work.back();
     struct Case
     {
@@ -210,7 +228,7 @@ end
     std::vector<Run>    runs;
     for (const auto &c : cases)
       {
-        const Run           run = peel(scene_file, "1", c.settings);
+        const Run           run = cycles(scene_file, "1", c.settings);
         std::vector<double> error;
         for (const double w : run.work)
           error.push_back(std::sqrt(std::max(W - w, 0.)));
@@ -268,6 +286,137 @@ end
                        "Kelly refinement reaches 0.9 of N^(-1/2)",
                        __FILE__,
                        __LINE__);
+  }
+
+  /** Relative energy errors sqrt((W - W_h) / W) of a run. */
+  std::vector<double>
+  relative_errors(const Run &run, const double W)
+  {
+    std::vector<double> error;
+    for (const double w : run.work)
+      error.push_back(std::sqrt(std::max(W - w, 0.) / W));
+    return error;
+  }
+
+  /** Unknowns at which a run first reaches @p target, and by log-log
+   * interpolation between the cycles around it (0, 0 if never). */
+  std::pair<double, double>
+  unknowns_at(const Run                 &run,
+              const std::vector<double> &error,
+              const double               target)
+  {
+    for (std::size_t i = 0; i < error.size(); ++i)
+      if (error[i] <= target)
+        {
+          if (i == 0)
+            return {run.unknowns[0], run.unknowns[0]};
+          const double s = std::log(error[i - 1] / target)
+                           / std::log(error[i - 1] / error[i]);
+          return {run.unknowns[i],
+                  run.unknowns[i - 1]
+                    * std::pow(run.unknowns[i] / run.unknowns[i - 1], s)};
+        }
+    return {0, 0};
+  }
+
+  /**
+   * The open-hole laminate in its plane (prm/open_hole_2d.prm: a
+   * quasi-isotropic laminate, in-plane isotropic, a hole of diameter d in
+   * a strip of width W under tension). The stress concentration at the
+   * hole's edge against Heywood's finite-width formula for the gross
+   * section, K = (2 + (1 - d/W)^3) / (1 - d/W); the true energy error
+   * from the load work against a fine adaptive Q2 run. The solution is
+   * smooth: uniform Q1 converges at the optimal N^(-1/2), and the ZZ
+   * refinement reaches 1 % with at least 4 times fewer unknowns than the
+   * first uniform mesh that does.
+   */
+  void
+  open_hole_in_plane(const std::string &scene_file, const bool root)
+  {
+    const Run reference
+      = cycles(scene_file,
+               "2",
+               "set Refinement cycles = 7\nset Refine fraction = 0.6");
+    const double W         = reference.work.back();
+    const auto   prm       = parameters::Parameters::from_file(scene_file);
+    const double ratio     = 2 * prm.geometry.hole_radius / prm.geometry.width;
+    const double heywood   = (2 + std::pow(1 - ratio, 3)) / (1 - ratio);
+    const double far_field = 100; // MPa, the scene's traction
+    if (root)
+      std::cout << "reference: " << reference.unknowns.back()
+                << " unknowns, W = " << W
+                << ", K = " << reference.probe_xx.back() / far_field
+                << " (Heywood " << heywood << "), sigma_yy at the edge "
+                << reference.probe_yy.back() << std::endl;
+    CHECK_CLOSE(reference.probe_xx.back() / far_field,
+                heywood,
+                0.015 * heywood);
+    amfrac_test::check(std::abs(reference.probe_yy.back())
+                         < 0.005 * reference.probe_xx.back(),
+                       "the hole's edge is traction free",
+                       __FILE__,
+                       __LINE__);
+
+    const Run uniform
+      = cycles(scene_file,
+               "1",
+               "set Refinement cycles = 4\nset Strategy = uniform");
+    const Run target = cycles(scene_file,
+                              "1",
+                              "set Refinement cycles = 12\nset Strategy = "
+                              "error target\nset Target error = 0.01");
+    const Run zz
+      = cycles(scene_file,
+               "1",
+               "set Refinement cycles = 8\nset Refine fraction = 0.5");
+    const auto   uniform_error = relative_errors(uniform, W);
+    const auto   target_error  = relative_errors(target, W);
+    const auto   zz_error      = relative_errors(zz, W);
+    const double uniform_rate  = rate(uniform.unknowns, uniform_error, 3);
+    const double zz_rate       = rate(zz.unknowns, zz_error, 3);
+    const auto   uniform_1     = unknowns_at(uniform, uniform_error, 0.01);
+    const auto   target_1      = unknowns_at(target, target_error, 0.01);
+    if (root)
+      {
+        for (const auto &[name, run, error] :
+             {std::tuple{"uniform", &uniform, &uniform_error},
+              std::tuple{"zz target 1 %", &target, &target_error},
+              std::tuple{"zz", &zz, &zz_error}})
+          for (std::size_t i = 0; i < error->size(); ++i)
+            std::cout << "  " << name << ": " << run->unknowns[i]
+                      << " unknowns, error " << (*error)[i] << ", theta "
+                      << run->zz[i] / ((*error)[i] * std::sqrt(W)) << std::endl;
+        std::cout << "rates: uniform " << uniform_rate << ", zz " << zz_rate
+                  << "; 1 %: uniform " << uniform_1.first << " ("
+                  << uniform_1.second << " interpolated), zz target "
+                  << target_1.first << " (" << target_1.second << ")"
+                  << std::endl;
+      }
+    // Optimal for Q1 in 2D: N^(-1/2), for uniform and adaptive meshes.
+    amfrac_test::check(uniform_rate >= 0.9 * 0.5,
+                       "uniform Q1 at 0.9 of N^(-1/2) (smooth solution)",
+                       __FILE__,
+                       __LINE__);
+    amfrac_test::check(zz_rate >= 0.9 * 0.5,
+                       "ZZ refinement at 0.9 of N^(-1/2)",
+                       __FILE__,
+                       __LINE__);
+    amfrac_test::check(target_error.back() <= 0.01,
+                       "the error target stops at a true error <= 1 %",
+                       __FILE__,
+                       __LINE__);
+    amfrac_test::check(target_1.first > 0
+                         && 4 * target_1.first <= uniform_1.first,
+                       "1 % with 4x fewer unknowns than uniform refinement",
+                       __FILE__,
+                       __LINE__);
+    amfrac_test::check(target_1.second > 0
+                         && 3.5 * target_1.second <= uniform_1.second,
+                       "interpolated to 1 %: 3.5x fewer unknowns",
+                       __FILE__,
+                       __LINE__);
+    const double theta = zz.zz.back() / (zz_error.back() * std::sqrt(W));
+    CHECK_CLOSE(theta, 1., 0.3);
   }
 
   /** The open-hole mesh of prm/open_hole_plate.prm refined twice on its
@@ -329,11 +478,13 @@ main(int argc, char *argv[])
     open_hole(argv[2]);
   else if (mode == "peel" && argc > 2)
     singular(argv[2], root);
+  else if (mode == "open_hole_2d" && argc > 2)
+    open_hole_in_plane(argv[2], root);
   else
     {
       std::cerr
         << "usage: app_adaptivity effectivity [REGION [thin]] | peel SCENE.prm | "
-           "hole SCENE.prm"
+           "hole SCENE.prm | open_hole_2d SCENE.prm"
         << std::endl;
       return 2;
     }

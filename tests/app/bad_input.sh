@@ -287,6 +287,15 @@ subsection Boundary conditions
   end
 end"
 expect hole_too_large "Geometry/Hole radius" "$(with 'set Elements along width = 2' 'set Hole radius = 5')"
+# The 2D model: a hole needs the in-plane model, which has no ply
+# interfaces and needs a symmetric stacking (no membrane-bending coupling).
+expect hole_cross_section "Geometry/Hole radius" "$(with 'set Dimension = 3' 'set Dimension = 2' | sed 's|set Elements along width = 2|set Hole radius = 2|')"
+in_plane=$(with 'set Dimension = 3' 'set Dimension = 2' | sed 's|subsection Geometry|subsection Geometry\n  set 2D model = in-plane|')
+expect in_plane_interfaces "Cohesive interfaces/Interfaces" "$in_plane
+subsection Cohesive interfaces
+  set Interfaces = all
+end"
+expect in_plane_unsymmetric "Geometry/Stacking sequence" "$(printf '%s\n' "$in_plane" | sed 's|\[0/90\]s|[0/90]|')"
 expect adaptivity_target_kelly "Adaptivity/Strategy" "$base
 subsection Adaptivity
   set Refinement cycles = 2

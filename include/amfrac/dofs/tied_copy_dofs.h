@@ -3,6 +3,7 @@
 #include <deal.II/base/index_set.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
@@ -53,6 +54,17 @@ namespace amfrac
     copy_handler() const
     {
       return dof_handler;
+    }
+
+    /** The mapping every integral and output on the copy space uses:
+     * MappingQ of the element's degree where the mesh has curved
+     * manifolds (an open hole: a Q2 solution on a polygonal hole would
+     * converge to the polygon's answer), MappingQ1 otherwise. Chosen at
+     * the first distribute(). */
+    const Mapping<dim> &
+    get_mapping() const
+    {
+      return *mapping;
     }
 
     const FiniteElement<dim> &
@@ -171,6 +183,7 @@ namespace amfrac
   private:
     const Triangulation<dim>              &triangulation;
     std::unique_ptr<FESystem<dim>>         fe;
+    std::unique_ptr<Mapping<dim>>          mapping;
     DoFHandler<dim>                        dof_handler;
     std::vector<std::vector<unsigned int>> face_dofs;
     std::vector<types::global_dof_index>   copy_to_reduced;

@@ -18,6 +18,9 @@ namespace amfrac
     /** Thickness coordinates of the ply boundaries, bottom to top
      * (n_plies + 1 values, the first is 0). */
     std::vector<double> ply_boundaries;
+    /** A 2D in-plane model (Geometry/2D model): the plies are homogenized
+     * through the thickness, the mesh has one material. */
+    bool in_plane;
 
     Laminate(const parameters::Geometry  &geometry,
              const parameters::Materials &materials);
@@ -42,9 +45,11 @@ namespace amfrac
    * every cell is its ply index, boundary ids 0..2*dim-1 are the faces
    * x-, x+, y-, y+, (z-, z+).
    */
-  /** The same for Geometry/Hole radius > 0 (3D): the plate with a
-   * hole, extruded ply by ply; boundary id 6 is the hole. The refinement
-   * of make_laminate_mesh follows the hole's cylindrical manifold. */
+  /** The same for Geometry/Hole radius > 0 (3D, or 2D in-plane): the
+   * plate with a hole, extruded ply by ply in 3D; boundary id 6 is the
+   * hole. The refinement of make_laminate_mesh follows the hole's
+   * cylindrical (circular) manifold. A 2D in-plane mesh is the plate's
+   * (x, y) plane with material id 0 everywhere. */
   template <int dim>
   void
   make_open_hole_mesh(const parameters::Geometry &geometry,

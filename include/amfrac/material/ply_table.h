@@ -3,25 +3,50 @@
 #include <amfrac/geometry/laminate.h>
 #include <amfrac/material/orthotropic.h>
 #include <amfrac/parameters/parameters.h>
+#include <limits>
 #include <vector>
 
 namespace amfrac
 {
-  /** What the bulk assembly and the postprocessing need of one ply. */
+  /** One ply of a laminate homogenized through its thickness (the 2D
+   * in-plane model): what recovering its stress from the common membrane
+   * strain needs. */
+  struct MembraneLayer
+  {
+    /** Plane-stress (reduced) stiffness Qbar in laminate axes x, y. */
+    SymmetricTensor<4, 2> reduced_stiffness;
+    Tensor<2, 3>          rotation;
+    Strengths             strengths;
+  };
+
+  /** What the bulk assembly and the postprocessing need of one ply (of
+   * the whole homogenized laminate in the 2D in-plane model). */
   template <int dim>
   struct PlyProperties
   {
-    /** Stiffness in 3D laminate axes (x, y = width, z = thickness). */
+    /** Stiffness in 3D laminate axes (x, y = width, z = thickness); the
+     * thickness average for a homogenized laminate, where only the
+     * membrane part below is used. */
     SymmetricTensor<4, 3> stiffness_3d;
-    /** The same restricted to the model (plane strain in 2D). */
+    /** The model's stiffness: restricted to the (x, thickness) plane in
+     * plane strain (2D cross-section), the membrane stiffness A/h in
+     * plane stress (2D in-plane). */
     SymmetricTensor<4, dim> stiffness;
     /** Columns: the ply's material axes in laminate axes. */
     Tensor<2, 3> rotation;
     Strengths    strengths;
     double       density;
+    /** The plies of a homogenized laminate (2D in-plane model), bottom
+     * first; empty otherwise. */
+    std::vector<MembraneLayer> layers;
   };
 
-  /** One entry per ply (indexed by the cell's material id). */
+  /**
+   * One entry per ply (indexed by the cell's material id); a single entry
+   * for the 2D in-plane model, the laminate homogenized by classical
+   * lamination theory. Throws InputError if that laminate is not
+   * symmetric (membrane-bending coupling B != 0).
+   */
   template <int dim>
   std::vector<PlyProperties<dim>>
   make_ply_table(const Laminate &laminate, const parameters::Materials &m);
@@ -41,11 +66,50 @@ namespace amfrac
     double                hoffman;
   };
 
+  /** The homogenized laminate's stress: the membrane (thickness-average)
+   * stress in model axes, and the material-axes stress and Hoffman index
+   * of the ply with the largest index under the common strain. */
+  template <int dim>
+  PlyStress
+  evaluate_membrane_stress(const PlyProperties<dim>      &laminate,
+                           const SymmetricTensor<2, dim> &strain)
+  {
+    SymmetricTensor<2, 2> membrane_strain;
+    for (unsigned int a = 0; a < 2; ++a)
+      for (unsigned int b = a; b < 2; ++b)
+        membrane_strain[a][b] = strain[a][b];
+    PlyStress result;
+    for (unsigned int a = 0; a < dim; ++a)
+      for (unsigned int b = a; b < dim; ++b)
+        result.model[a][b] = (laminate.stiffness * strain)[a][b];
+    result.hoffman = -std::numeric_limits<double>::max();
+    for (const MembraneLayer &layer : laminate.layers)
+      {
+        const SymmetricTensor<2, 2> s2
+          = layer.reduced_stiffness * membrane_strain;
+        SymmetricTensor<2, 3> s3;
+        for (unsigned int a = 0; a < 2; ++a)
+          for (unsigned int b = a; b < 2; ++b)
+            s3[a][b] = s2[a][b];
+        const SymmetricTensor<2, 3> material
+          = to_material_axes(s3, layer.rotation);
+        const double index = hoffman_index(material, layer.strengths);
+        if (index > result.hoffman)
+          {
+            result.hoffman  = index;
+            result.material = material;
+          }
+      }
+    return result;
+  }
+
   template <int dim>
   PlyStress
   evaluate_ply_stress(const PlyProperties<dim>      &ply,
                       const SymmetricTensor<2, dim> &strain)
   {
+    if (!ply.layers.empty())
+      return evaluate_membrane_stress(ply, strain);
     const SymmetricTensor<2, 3> laminate
       = ply.stiffness_3d * embed_in_3d<dim>(strain);
     PlyStress result;

@@ -29,7 +29,12 @@ namespace amfrac
       unsigned int        elements_per_ply;
       unsigned int        global_refinements;
       double              mesh_distortion;
-      /** A through-thickness hole at the plate centre (0: none; 3D). */
+      /** 2D only: the model plane is the laminate's (x, y) plane (plane
+       * stress, the stacking homogenized through the thickness) instead
+       * of the (x, thickness) cross-section (plane strain). */
+      bool in_plane = false;
+      /** A through-thickness hole at the plate centre (0: none; 3D, or 2D
+       * in-plane). */
       double       hole_radius;
       std::string  refinement_region;
       unsigned int region_refinements;

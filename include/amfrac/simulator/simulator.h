@@ -268,9 +268,15 @@ namespace amfrac
     process_zone_lengths() const;
     /** Execute the flags and move the converged Newton state at @p t:
      * displacement by SolutionTransfer on the copy layer (tau_2),
-     * interface history by CohesiveInterfaces::transfer() (tau_1). */
+     * interface history by CohesiveInterfaces::transfer() (tau_1).
+     * adaptivity.csv logs what asked for the change: @p by_estimate
+     * (Refine every or Error threshold) and the relative ZZ error of the
+     * converged state if it was estimated (-1 otherwise). */
     void
-    refine_and_transfer(const unsigned int step, const double t);
+    refine_and_transfer(const unsigned int step,
+                        const double       t,
+                        const bool         by_estimate,
+                        const double       zz_relative);
     /** Rebuild everything that depends on the mesh. */
     void
     setup_after_refinement();
