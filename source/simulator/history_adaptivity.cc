@@ -3,11 +3,25 @@
 // rule), and the transfer of the converged state to the new mesh (the
 // seed's tau_2 for the displacement, tau_1 for the interface history).
 #include <amfrac/simulator/simulator.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/numerics/rtree.h>
 #include <deal.II/numerics/solution_transfer.h>
 
 namespace amfrac
 {
+  namespace
+  {
+    /** Refinement along the plies: x in 2D (y is the thickness), x and y
+     * in 3D. */
+    template <int dim>
+    RefinementCase<dim>
+    in_plane_cut()
+    {
+      return dim == 2 ? RefinementCase<dim>::cut_x :
+                        RefinementCase<dim>(RefinementCase<3>::cut_xy);
+    }
+  } // namespace
+
   namespace
   {
     namespace bgi = boost::geometry::index;
@@ -87,15 +101,10 @@ namespace amfrac
     // of the mesh costs a transfer, a new matrix and a factorization).
     if (!needed)
       return;
-    // In 2D along the plies only (cut_x): the rule is about the in-plane
-    // size, and refining through the thickness as well multiplies the
-    // unknowns and the direct solver's fill for nothing. In 3D cut_xy
-    // makes deal.II refine some neighbours through the thickness, and the
-    // hanging-node constraints of the copy layer then form a cycle on the
-    // DCB (found, not understood yet): 3D refines isotropically.
-    const RefinementCase<dim> cut = dim == 2 ?
-                                      RefinementCase<dim>::cut_x :
-                                      RefinementCase<dim>::isotropic_refinement;
+    // Along the plies only (cut_x in 2D, cut_xy in 3D): the rule is about
+    // the in-plane size, and refining through the thickness as well
+    // multiplies the unknowns and the direct solver's fill for nothing.
+    const RefinementCase<dim> cut = in_plane_cut<dim>();
     for (const auto &cell : triangulation.active_cell_iterators())
       {
         const auto [distance, coarse] = where[cell->active_cell_index()];
@@ -107,6 +116,46 @@ namespace amfrac
           }
         else if (coarsen && distance > 3 && !cell->refine_flag_set())
           cell->set_coarsen_flag();
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::keep_refinement_in_plane()
+  {
+    // deal.II keeps at most one hanging level across faces and edges: when
+    // a refinement would break that, it refines the coarse neighbour as it
+    // sees fit, in 3D often isotropically, and a cell refined through the
+    // thickness next to one refined along the plies leaves faces that
+    // neither side's face contains (no side is "the coarse one" there, and
+    // the copy layer cannot tie them). So every flag becomes an in-plane
+    // cut, and every coarser cell at a vertex of a cell to be refined is
+    // refined along the plies too, before deal.II has to.
+    // In 2D deal.II's anisotropic refinement has no such faces, and the
+    // estimators keep refining through the thickness as well.
+    if (dim == 2)
+      return;
+    const RefinementCase<dim> cut = in_plane_cut<dim>();
+    const auto cells_at = GridTools::vertex_to_cell_map(triangulation);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->refine_flag_set())
+        cell->set_refine_flag(cut);
+    for (bool changed = true; changed;)
+      {
+        changed = false;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->refine_flag_set())
+            for (const unsigned int v : cell->vertex_indices())
+              for (const auto &other : cells_at[cell->vertex_index(v)])
+                if (other->is_active() && other->level() < cell->level()
+                    && !other->refine_flag_set())
+                  {
+                    other->clear_coarsen_flag();
+                    other->set_refine_flag(cut);
+                    changed = true;
+                  }
       }
   }
 
@@ -142,8 +191,18 @@ namespace amfrac
           mark_by_estimate();
         if (a.process_zone_elements > 0)
           mark_process_zone(!a.by_estimator());
-        if (!limit_flags() || !interfaces->match_flags(triangulation))
+        if (!limit_flags())
           break;
+        keep_refinement_in_plane();
+        if (!interfaces->match_flags(triangulation))
+          break;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          AssertThrow(dim == 2 || !cell->refine_flag_set()
+                        || (cell->refine_flag_set() | in_plane_cut<dim>())
+                             == in_plane_cut<dim>(),
+                      ExcMessage("refinement during a load history stays "
+                                 "in the plane of the plies, but a cell "
+                                 "was flagged through the thickness"));
 
         refine_and_transfer(step,
                             t,

@@ -258,6 +258,11 @@ namespace amfrac
      * converged state to the new mesh. */
     void
     adapt_during_history(const unsigned int step, const double t);
+    /** Make every refine flag a cut along the plies and refine coarser
+     * cells at the vertices of flagged cells along the plies too, so that
+     * deal.II never has to refine through the thickness. */
+    void
+    keep_refinement_in_plane();
     /** The process-zone rule: refine near the delamination fronts,
      * coarsen far from them (if nothing else marks). */
     void
