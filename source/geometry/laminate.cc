@@ -217,6 +217,40 @@ namespace amfrac
       plate.refine_global(refinements);
       GridGenerator::flatten_triangulation(plate, flat);
     }
+
+    /** The ids and manifolds of an open-hole plate (2D, or extruded to
+     * 3D): boundary ids renumbered by @p renumber (the hole becomes 6),
+     * the hole's faces on @p hole (manifold id 0), transfinite
+     * interpolation (id 1) in the square around the hole, where deal.II's
+     * plate with a hole has its curved cells. */
+    template <int dim>
+    void
+    attach_hole_manifolds(
+      const parameters::Geometry                             &geometry,
+      const std::map<types::boundary_id, types::boundary_id> &renumber,
+      const Manifold<dim>                                    &hole,
+      Triangulation<dim>                                     &triangulation)
+    {
+      const double box = 0.5 * std::min(geometry.length, geometry.width);
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (std::abs(cell->center()[0] - 0.5 * geometry.length) < box
+            && std::abs(cell->center()[1] - 0.5 * geometry.width) < box)
+          cell->set_all_manifold_ids(1);
+      for (const auto &cell : triangulation.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              const auto id = cell->face(f)->boundary_id();
+              if (renumber.count(id))
+                cell->face(f)->set_boundary_id(renumber.at(id));
+              if (cell->face(f)->boundary_id() == 6)
+                cell->face(f)->set_all_manifold_ids(0);
+            }
+      triangulation.set_manifold(0, hole);
+      TransfiniteInterpolationManifold<dim> tfi;
+      tfi.initialize(triangulation);
+      triangulation.set_manifold(1, tfi);
+    }
   } // namespace
 
 
@@ -234,33 +268,12 @@ namespace amfrac
                                          triangulation);
     // Extrusion keeps the 2D ids on the side walls (4: the hole) and gives
     // the bottom and top 5 and 6; amfrac's are z- = 4, z+ = 5, hole = 6.
-    const std::map<types::boundary_id, types::boundary_id> renumber{{4, 6},
-                                                                    {5, 4},
-                                                                    {6, 5}};
     const Point<3> center(0.5 * geometry.length, 0.5 * geometry.width, 0);
-    const double   box = 0.5 * std::min(geometry.length, geometry.width);
-    for (const auto &cell : triangulation.active_cell_iterators())
-      {
-        const Point<3> c = cell->center();
-        if (std::abs(c[0] - center[0]) < box
-            && std::abs(c[1] - center[1]) < box)
-          cell->set_all_manifold_ids(1);
-      }
-    for (const auto &cell : triangulation.active_cell_iterators())
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary())
-          {
-            const auto id = cell->face(f)->boundary_id();
-            if (renumber.count(id))
-              cell->face(f)->set_boundary_id(renumber.at(id));
-            if (cell->face(f)->boundary_id() == 6)
-              cell->face(f)->set_all_manifold_ids(0);
-          }
-    triangulation.set_manifold(
-      0, CylindricalManifold<3>(Tensor<1, 3>({0., 0., 1.}), center));
-    TransfiniteInterpolationManifold<3> tfi;
-    tfi.initialize(triangulation);
-    triangulation.set_manifold(1, tfi);
+    attach_hole_manifolds<3>(geometry,
+                             {{4, 6}, {5, 4}, {6, 5}},
+                             CylindricalManifold<3>(Tensor<1, 3>({0., 0., 1.}),
+                                                    center),
+                             triangulation);
   }
 
 
@@ -276,28 +289,12 @@ namespace amfrac
                        "an open hole needs Dimension = 3 or 2D model = "
                        "in-plane");
     make_hole_plate_2d(geometry, triangulation);
-    // The same ids and manifolds as the extruded 3D plate: hole = 6 on a
-    // circle, transfinite interpolation in the square around it.
-    const Point<2> center(0.5 * geometry.length, 0.5 * geometry.width);
-    const double   box = 0.5 * std::min(geometry.length, geometry.width);
-    for (const auto &cell : triangulation.active_cell_iterators())
-      {
-        const Point<2> c = cell->center();
-        if (std::abs(c[0] - center[0]) < box
-            && std::abs(c[1] - center[1]) < box)
-          cell->set_all_manifold_ids(1);
-      }
-    for (const auto &cell : triangulation.active_cell_iterators())
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == 4)
-          {
-            cell->face(f)->set_boundary_id(6);
-            cell->face(f)->set_all_manifold_ids(0);
-          }
-    triangulation.set_manifold(0, SphericalManifold<2>(center));
-    TransfiniteInterpolationManifold<2> tfi;
-    tfi.initialize(triangulation);
-    triangulation.set_manifold(1, tfi);
+    // The same ids and manifolds as the extruded 3D plate.
+    attach_hole_manifolds<2>(geometry,
+                             {{4, 6}},
+                             SphericalManifold<2>(Point<2>(
+                               0.5 * geometry.length, 0.5 * geometry.width)),
+                             triangulation);
   }
 
 

@@ -21,6 +21,7 @@
 //
 // usage: app_dcb_adaptive_2d ADAPTIVE.prm UNIFORM.prm WORKDIR
 #include "../check.h"
+#include "scene.h"
 
 #include <algorithm>
 #include <amfrac/parameters/parameters.h>
@@ -38,18 +39,12 @@ namespace
   std::unique_ptr<Simulator<2>>
   run(const std::string &file, const std::string &directory)
   {
-    std::ifstream     in(file);
-    std::stringstream text;
-    text << in.rdbuf()
-         << "\nsubsection Time\n  set End time = 3\n"
-            "  set Number of steps = 102\nend\n"
-            "subsection Output\n  set Field format = none\n"
-            "  set Directory = "
-         << directory << "\nend\n";
-    auto simulator = std::make_unique<Simulator<2>>(
-      parameters::Parameters::from_string(text.str()), MPI_COMM_WORLD);
-    simulator->run();
-    return simulator;
+    return amfrac_test::run_scene<2>(
+      file,
+      "subsection Time\n  set End time = 3\n  set Number of steps = 102\n"
+      "end\nsubsection Output\n  set Field format = none\n"
+      "  set Directory = "
+        + directory + "\nend");
   }
 
   double

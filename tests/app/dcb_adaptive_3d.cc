@@ -15,6 +15,7 @@
 //
 // usage: app_dcb_adaptive_3d SCENE.prm WORKDIR
 #include "../check.h"
+#include "scene.h"
 
 #include <amfrac/parameters/parameters.h>
 #include <amfrac/simulator/simulator.h>
@@ -33,15 +34,14 @@ main(int argc, char *argv[])
       std::cerr << "usage: app_dcb_adaptive_3d SCENE.prm WORKDIR\n";
       return 2;
     }
-  std::ifstream     in(argv[1]);
-  std::stringstream text;
-  text << in.rdbuf()
-       << "\nsubsection Time\n  set End time = 2.6\n"
-          "  set Number of steps = 87\nend\n"
-          "subsection Output\n  set Field format = none\n"
-          "  set Directory = "
-       << argv[2] << "\nend\n";
-  const auto   prm = parameters::Parameters::from_string(text.str());
+  const auto prm
+    = amfrac_test::scene_with(argv[1],
+                              std::string(
+                                "subsection Time\n  set End time = 2.6\n"
+                                "  set Number of steps = 87\nend\n"
+                                "subsection Output\n  set Field format = none\n"
+                                "  set Directory = ")
+                                + argv[2] + "\nend");
   Simulator<3> simulator(prm, MPI_COMM_WORLD);
   simulator.run();
 

@@ -17,6 +17,7 @@
 //
 // usage: app_history_triggers SCENE.prm WORKDIR THRESHOLD
 #include "../check.h"
+#include "scene.h"
 
 #include <amfrac/parameters/parameters.h>
 #include <amfrac/simulator/simulator.h>
@@ -35,20 +36,15 @@ namespace
       const std::string &adaptivity,
       const double       end_time = 3)
   {
-    std::ifstream     in(file);
-    std::stringstream text;
-    text << in.rdbuf()
-         << "\nsubsection Adaptivity\n  set Process zone elements = 0\n"
-         << adaptivity
-         << "\nend\nsubsection Time\n  set End time = " << end_time
-         << "\n  set Number of steps = " << std::lround(34 * end_time)
-         << "\nend\nsubsection Output\n  set Field format = none\n"
-            "  set Directory = "
-         << directory << "\nend\n";
-    auto simulator = std::make_unique<Simulator<2>>(
-      parameters::Parameters::from_string(text.str()), MPI_COMM_WORLD);
-    simulator->run();
-    return simulator;
+    return amfrac_test::run_scene<2>(
+      file,
+      "subsection Adaptivity\n  set Process zone elements = 0\n" + adaptivity
+        + "\nend\nsubsection Time\n  set End time = " + std::to_string(end_time)
+        + "\n  set Number of steps = "
+        + std::to_string(std::lround(34 * end_time))
+        + "\nend\nsubsection Output\n  set Field format = none\n"
+          "  set Directory = "
+        + directory + "\nend");
   }
 
   struct Outcome
