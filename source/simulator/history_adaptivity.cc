@@ -11,6 +11,8 @@ namespace amfrac
 {
   namespace
   {
+    namespace bgi = boost::geometry::index;
+
     /** Refinement along the plies: x in 2D (y is the thickness), x and y
      * in 3D. */
     template <int dim>
@@ -20,11 +22,6 @@ namespace amfrac
       return dim == 2 ? RefinementCase<dim>::cut_x :
                         RefinementCase<dim>(RefinementCase<3>::cut_xy);
     }
-  } // namespace
-
-  namespace
-  {
-    namespace bgi = boost::geometry::index;
 
     /** The largest extent of @p cell along the plies (every reference
      * direction but the last, which is the laminate's thickness). */
