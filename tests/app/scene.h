@@ -3,7 +3,10 @@
 // A scene file with text appended (later entries override earlier ones),
 // and a run of it: how the application tests vary a shipped scene.
 
+#include "../check.h"
+
 #include <amfrac/parameters/parameters.h>
+#include <amfrac/postprocess/history.h>
 #include <amfrac/simulator/simulator.h>
 #include <deal.II/base/mpi.h>
 #include <fstream>
@@ -31,5 +34,22 @@ namespace amfrac_test
                                                  MPI_COMM_WORLD);
     simulator->run();
     return simulator;
+  }
+  /** What every mesh change during a load history must keep (row @p r of
+   * adaptivity.csv): the dissipated energy (1e-12, once there is some),
+   * the debonded and damaged areas (never smaller), and the balance of the
+   * two faces of the interface elements (round-off). */
+  inline void
+  check_transfer(const amfrac::History &changes, const std::size_t r)
+  {
+    const auto value
+      = [&](const std::string &column) { return changes.value(r, column); };
+    if (value("dissipated_before") > 1e-3)
+      CHECK_CLOSE(value("dissipated_after") / value("dissipated_before"),
+                  1.,
+                  1e-12);
+    CHECK(value("debonded_after") >= value("debonded_before") - 1e-12);
+    CHECK(value("damaged_after") >= value("damaged_before") - 1e-12);
+    CHECK(value("interface_force_imbalance") < 1e-10);
   }
 } // namespace amfrac_test
