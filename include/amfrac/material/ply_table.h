@@ -78,10 +78,11 @@ namespace amfrac
     for (unsigned int a = 0; a < 2; ++a)
       for (unsigned int b = a; b < 2; ++b)
         membrane_strain[a][b] = strain[a][b];
-    PlyStress result;
+    const SymmetricTensor<2, dim> membrane_stress = laminate.stiffness * strain;
+    PlyStress                     result;
     for (unsigned int a = 0; a < dim; ++a)
       for (unsigned int b = a; b < dim; ++b)
-        result.model[a][b] = (laminate.stiffness * strain)[a][b];
+        result.model[a][b] = membrane_stress[a][b];
     result.hoffman = -std::numeric_limits<double>::max();
     for (const MembraneLayer &layer : laminate.layers)
       {
