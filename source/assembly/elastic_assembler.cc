@@ -351,6 +351,72 @@ namespace amfrac
 
   template <int dim>
   void
+  ElasticAssembler<dim>::cell_geometric_matrix(Scratch           &scratch,
+                                               const unsigned int ply,
+                                               const dealii::Vector<double> &u,
+                                               FullMatrix<double> &KG) const
+  {
+    const auto        &fe        = dofs.get_fe();
+    const auto        &fe_values = scratch.fe_values;
+    const unsigned int n         = KG.m();
+    KG                           = 0;
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        SymmetricTensor<2, dim> strain;
+        for (unsigned int i = 0; i < n; ++i)
+          strain
+            += u(i) * fe_values[scratch.displacement].symmetric_gradient(i, q);
+        const SymmetricTensor<2, dim> stress
+          = plies[ply].stiffness * strain * fe_values.JxW(q);
+        // The primitive FESystem: shape i has one nonzero component, and
+        // K_G couples only equal components.
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const Tensor<1, dim> stress_grad_i
+              = stress * fe_values.shape_grad(i, q);
+            const unsigned int c_i = fe.system_to_component_index(i).first;
+            for (unsigned int j = 0; j <= i; ++j)
+              if (fe.system_to_component_index(j).first == c_i)
+                KG(i, j) += stress_grad_i * fe_values.shape_grad(j, q);
+          }
+      }
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = i + 1; j < n; ++j)
+        KG(i, j) = KG(j, i);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticAssembler<dim>::assemble_geometric_matrix(
+    const Vector                    &relevant_solution,
+    const AffineConstraints<double> &constraints,
+    Matrix                          &matrix) const
+  {
+    const unsigned int n = dofs.get_fe().n_dofs_per_cell();
+    Scratch scratch(dofs.get_mapping(), dofs.get_fe(), quadrature_degree);
+    FullMatrix<double>                   KG(n, n);
+    dealii::Vector<double>               u(n);
+    std::vector<types::global_dof_index> indices(n);
+    matrix = 0;
+    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          scratch.fe_values.reinit(cell);
+          dofs.get_dof_indices(cell, indices);
+          for (unsigned int i = 0; i < n; ++i)
+            u(i) = relevant_solution(indices[i]);
+          cell_geometric_matrix(scratch, cell->material_id(), u, KG);
+          constraints.distribute_local_to_global(KG, indices, matrix);
+        }
+    matrix.compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  void
   ElasticAssembler<dim>::assemble_rhs(
     const Loads<dim>                &loads,
     const double                     t,

@@ -416,12 +416,18 @@ namespace amfrac
                             "0",
                             Patterns::Anything(),
                             "Traction vector [MPa] (Type = traction), "
-                            "expressions separated by ';'.");
+                            "expressions separated by ';'. With Type = "
+                            "displacement it loads the components that are "
+                            "not prescribed (on prescribed ones it only "
+                            "changes the reaction).");
           prm.declare_entry("Pressure",
                             "0",
                             Patterns::Anything(),
                             "Pressure [MPa] acting against the outward "
-                            "normal (Type = pressure).");
+                            "normal (Type = pressure; with Type = "
+                            "displacement on the components that are not "
+                            "prescribed, e.g. an edge held in z and "
+                            "compressed in x).");
           prm.leave_subsection();
         }
       declare_lever(prm);
@@ -659,7 +665,7 @@ namespace amfrac
             face.components[2] = false;
           face.displacement = split_expressions(prm.get("Displacement"));
           face.traction     = split_expressions(prm.get("Traction"));
-          face.pressure     = prm.get("Pressure");
+          face.pressure     = Utilities::trim(prm.get("Pressure"));
           face.where        = Utilities::trim(prm.get("Where"));
           prm.leave_subsection();
 
@@ -1319,6 +1325,7 @@ namespace amfrac
       Time::declare_parameters(prm);
       Output::declare_parameters(prm);
       Adaptivity::declare_parameters(prm);
+      Buckling::declare_parameters(prm);
     }
 
 
@@ -1364,12 +1371,104 @@ namespace amfrac
                                         "Adaptivity/Error threshold",
           "refinement during a load history is for scenes with cohesive "
           "interfaces; a linear scene adapts by Refinement cycles");
+      buckling.parse_parameters(prm);
+      check_buckling_input();
       if ((adaptivity.active() || adaptivity.during_history())
           && time.explicit_dynamics)
         throw InputError("Adaptivity/Refinement cycles",
                          "adaptive refinement of explicit runs is not "
                          "available yet (the explicit path takes no hanging "
                          "nodes); switch the Adaptivity subsection off");
+    }
+
+
+
+    void
+    Parameters::check_buckling_input() const
+    {
+      if (!buckling.active())
+        return;
+      const std::string name = "Buckling/Number of modes";
+      if (time.explicit_dynamics)
+        throw InputError(name,
+                         "linear buckling analyses a static state: it needs "
+                         "Time/Time integration = static");
+      if (geometry.in_plane)
+        throw InputError(name,
+                         "Geometry/2D model = in-plane has no out-of-plane "
+                         "displacement to buckle into; use Dimension = 3 or "
+                         "2D model = cross-section");
+      if (!cohesive.interfaces.empty())
+        throw InputError(name,
+                         "linear buckling of a state with cohesive "
+                         "interfaces is not available yet; leave "
+                         "Cohesive interfaces/Interfaces empty");
+      if (adaptivity.active())
+        throw InputError(name,
+                         "linear buckling after adaptive refinement cycles "
+                         "is not available yet; set Adaptivity/Refinement "
+                         "cycles = 0");
+    }
+
+
+
+    void
+    Buckling::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Buckling");
+      prm.declare_entry(
+        "Number of modes",
+        "0",
+        Patterns::Integer(0, 100),
+        "After the last load step of a static run, the lowest positive load "
+        "factors lambda of (K + lambda K_G) v = 0 and their modes, with K_G "
+        "the geometric stiffness of the stress of that step (0: no "
+        "buckling analysis). lambda multiplies the whole load of the last "
+        "step, prescribed displacements included. Written to buckling.csv "
+        "and, with VTU output, to buckling_modes.pvd.");
+      prm.declare_entry("Block size",
+                        "0",
+                        Patterns::Integer(0, 32),
+                        "Vectors per block of the block Lanczos iteration "
+                        "(0: min(k, 4) for k modes). A block of at least "
+                        "m finds a load factor of multiplicity m (equal "
+                        "modes of a symmetric structure) reliably; a "
+                        "smaller one finds the copies only through "
+                        "rounding, after more solves.");
+      prm.declare_entry("Tolerance",
+                        "1e-8",
+                        Patterns::Double(0),
+                        "Relative residual |B v - mu K v| / |B v| (B = "
+                        "-K_G, mu = 1/lambda) of every wanted mode; the "
+                        "load factor's error is about its square.");
+      prm.declare_entry("Max basis size",
+                        "240",
+                        Patterns::Integer(2),
+                        "Largest Lanczos basis (vectors) before the "
+                        "analysis gives up with an error; each vector "
+                        "costs two solution vectors of memory.");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Buckling::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Buckling");
+      n_modes        = prm.get_integer("Number of modes");
+      block_size     = prm.get_integer("Block size");
+      tolerance      = prm.get_double("Tolerance");
+      max_basis_size = prm.get_integer("Max basis size");
+      prm.leave_subsection();
+      const unsigned int block
+        = block_size > 0 ? block_size : std::min(n_modes, 4u);
+      if (n_modes > 0 && max_basis_size < n_modes + 2 * block)
+        throw InputError("Buckling/Max basis size",
+                         "must be at least Number of modes plus two blocks ("
+                           + std::to_string(n_modes + 2 * block) + ")");
+      if (!(tolerance > 0))
+        throw InputError("Buckling/Tolerance", "must be positive");
     }
 
 

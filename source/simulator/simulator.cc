@@ -136,13 +136,16 @@ namespace amfrac
         const parameters::BoundaryFace &face = bc.faces[id];
         const std::string path = "Boundary conditions/" + face.name + "/";
         using Type             = parameters::BoundaryFace::Type;
-        if (face.type == Type::traction)
+        // A displacement face may carry a load on its free components as
+        // well (an edge held in z and compressed in x).
+        const bool supported = face.type == Type::displacement;
+        if (face.type == Type::traction || (supported && face.has_traction()))
           loads.tractions[id] = make_expression_function<dim>(
             face.traction, dim, constants, path + "Traction");
-        else if (face.type == Type::pressure)
+        if (face.type == Type::pressure || (supported && face.has_pressure()))
           loads.pressures[id] = make_expression_function<dim>(
             {face.pressure}, 1, constants, path + "Pressure");
-        else if (face.type == Type::displacement)
+        if (supported)
           {
             PrescribedDisplacement<dim> condition;
             condition.name        = face.name;
@@ -442,6 +445,8 @@ namespace amfrac
                     {{"strain_energy", energies.strain_energy},
                      {"load_work", energies.load_work}});
       }
+    if (parameters.buckling.active())
+      analyse_buckling(solver, n_steps * dt);
   }
 
 

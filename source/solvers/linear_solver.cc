@@ -1,6 +1,7 @@
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
 #include <Epetra_LinearProblem.h>
+#include <Epetra_MultiVector.h>
 #include <amfrac/parameters/input_error.h>
 #include <amfrac/solvers/linear_solver.h>
 #include <deal.II/base/timer.h>
@@ -137,6 +138,66 @@ namespace amfrac
 
 
   LinearSolver::Report
+  LinearSolver::solve(std::vector<Vector> &x, const std::vector<Vector> &b)
+  {
+    AssertDimension(x.size(), b.size());
+    if (!direct || x.empty())
+      {
+        Report total;
+        for (unsigned int j = 0; j < x.size(); ++j)
+          {
+            const Report report = solve(x[j], b[j]);
+            total.iterations += report.iterations;
+            total.seconds += report.seconds;
+          }
+        return total;
+      }
+    Timer                 timer;
+    std::vector<double *> x_columns, b_columns;
+    for (unsigned int j = 0; j < x.size(); ++j)
+      {
+        x_columns.push_back(x[j].trilinos_vector()[0]);
+        b_columns.push_back(const_cast<double *>(b[j].trilinos_vector()[0]));
+      }
+    const auto        &map = x[0].trilinos_vector().Map();
+    Epetra_MultiVector x_block(View, map, x_columns.data(), x.size());
+    Epetra_MultiVector b_block(View, map, b_columns.data(), b.size());
+    direct_problem->SetLHS(&x_block);
+    direct_problem->SetRHS(&b_block);
+    AssertThrow(direct->Solve() == 0, ExcMessage("the direct solver failed"));
+    for (unsigned int j = 0; j < x.size(); ++j)
+      check_direct_residual(x[j], b[j]);
+    return {static_cast<unsigned int>(x.size()), timer.wall_time()};
+  }
+
+
+
+  void
+  LinearSolver::check_direct_residual(const Vector &x, const Vector &b) const
+  {
+    // A singular stiffness can pass the factorization with tiny pivots;
+    // the residual tells (a Newton loop checks its own residual).
+    if (!check_residual)
+      return;
+    Vector residual(b);
+    matrix->vmult(residual, x);
+    residual -= b;
+    const double relative = residual.l2_norm() / std::max(b.l2_norm(), 1e-300);
+    if (!(relative < 1e-6))
+      {
+        std::ostringstream message;
+        message << "the direct solve is inaccurate (relative residual "
+                << relative
+                << "): the stiffness matrix is singular or nearly so. Is "
+                   "the laminate free to move as a rigid body? Check the "
+                   "prescribed displacements.";
+        throw CollectiveError(message.str());
+      }
+  }
+
+
+
+  LinearSolver::Report
   LinearSolver::solve(Vector &x, const Vector &b)
   {
     Timer  timer;
@@ -149,28 +210,7 @@ namespace amfrac
         AssertThrow(direct->Solve() == 0,
                     ExcMessage("the direct solver failed"));
         report.iterations = 1;
-        // A singular stiffness can pass the factorization with tiny pivots;
-        // the residual tells (a Newton loop checks its own residual).
-        if (!check_residual)
-          {
-            report.seconds = timer.wall_time();
-            return report;
-          }
-        Vector residual(b);
-        matrix->vmult(residual, x);
-        residual -= b;
-        const double relative
-          = residual.l2_norm() / std::max(b.l2_norm(), 1e-300);
-        if (!(relative < 1e-6))
-          {
-            std::ostringstream message;
-            message << "the direct solve is inaccurate (relative residual "
-                    << relative
-                    << "): the stiffness matrix is singular or nearly so. Is "
-                       "the laminate free to move as a rigid body? Check the "
-                       "prescribed displacements.";
-            throw CollectiveError(message.str());
-          }
+        check_direct_residual(x, b);
       }
     else
       {

@@ -296,6 +296,35 @@ subsection Cohesive interfaces
   set Interfaces = all
 end"
 expect in_plane_unsymmetric "Geometry/Stacking sequence" "$(printf '%s\n' "$in_plane" | sed 's|\[0/90\]s|[0/90]|')"
+# Linear buckling: only of a static state with out-of-plane freedom and
+# without cohesive interfaces or refinement cycles (for now).
+buckling='
+subsection Buckling
+  set Number of modes = 2
+end'
+expect buckling_in_plane "Buckling/Number of modes" "$in_plane$buckling"
+expect buckling_explicit "Buckling/Number of modes" "$base$buckling
+subsection Time
+  set Time integration = explicit
+end"
+expect buckling_interfaces "Buckling/Number of modes" "$base$buckling
+subsection Cohesive interfaces
+  set Interfaces = all
+end"
+expect buckling_adaptivity "Buckling/Number of modes" "$base$buckling
+subsection Adaptivity
+  set Refinement cycles = 1
+end"
+expect buckling_basis "Buckling/Max basis size" "$base
+subsection Buckling
+  set Number of modes = 20
+  set Max basis size = 20
+end"
+expect buckling_tolerance "Buckling/Tolerance" "$base
+subsection Buckling
+  set Number of modes = 1
+  set Tolerance = 0
+end"
 expect adaptivity_target_kelly "Adaptivity/Strategy" "$base
 subsection Adaptivity
   set Refinement cycles = 2

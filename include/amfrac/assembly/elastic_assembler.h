@@ -41,6 +41,16 @@ namespace amfrac
     assemble_matrix(const AffineConstraints<double> &constraints,
                     Matrix                          &matrix) const;
 
+    /** The condensed geometric (initial stress) stiffness K_G of the
+     * stress of @p relevant_solution: K_G(i, j) = delta_{c_i c_j}
+     * int grad(phi_i) . sigma grad(phi_j), the second variation of the
+     * Green-Lagrange strain energy under a fixed stress. Linear buckling
+     * solves (K + lambda K_G) v = 0 with it. */
+    void
+    assemble_geometric_matrix(const Vector &relevant_solution,
+                              const AffineConstraints<double> &constraints,
+                              Matrix                          &matrix) const;
+
     /** The condensed load vector at time @p t, including the effect of
      * inhomogeneous constraints (the cell stiffness is computed only on
      * cells that have such constraints). */
@@ -119,6 +129,14 @@ namespace amfrac
     cell_matrix(Scratch            &scratch,
                 const unsigned int  ply,
                 FullMatrix<double> &K) const;
+
+    /** K_G of one cell from its nodal displacements @p u (fe_values
+     * reinitialized on the cell). */
+    void
+    cell_geometric_matrix(Scratch                      &scratch,
+                          const unsigned int            ply,
+                          const dealii::Vector<double> &u,
+                          FullMatrix<double>           &KG) const;
 
     void
     cell_load(Scratch                                        &scratch,

@@ -89,6 +89,18 @@ namespace amfrac
       std::vector<std::string> traction;
       std::string              pressure;
       std::string              where;
+
+      /** Whether Traction or Pressure is other than the default 0. */
+      bool
+      has_traction() const
+      {
+        return !(traction.size() == 1 && traction[0] == "0");
+      }
+      bool
+      has_pressure() const
+      {
+        return pressure != "0";
+      }
     };
 
     /** `subsection Boundary conditions/Patch load`: a total force (a
@@ -344,6 +356,27 @@ namespace amfrac
       parse_parameters(ParameterHandler &prm);
     };
 
+    /** `subsection Buckling`: linear buckling of the final state of a
+     * static run. */
+    struct Buckling
+    {
+      unsigned int n_modes;
+      unsigned int block_size;
+      double       tolerance;
+      unsigned int max_basis_size;
+
+      bool
+      active() const
+      {
+        return n_modes > 0;
+      }
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
     /** All parameters of a run. */
     struct Parameters
     {
@@ -358,6 +391,7 @@ namespace amfrac
       Time               time;
       Output             output;
       Adaptivity         adaptivity;
+      Buckling           buckling;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -373,6 +407,11 @@ namespace amfrac
       /** The same from the text of a parameter file (for tests). */
       static Parameters
       from_string(const std::string &text);
+
+    private:
+      /** Inputs a linear buckling analysis cannot take (InputError). */
+      void
+      check_buckling_input() const;
     };
 
     /** Split "a; b; c" into trimmed expressions. */

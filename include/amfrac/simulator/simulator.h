@@ -122,6 +122,14 @@ namespace amfrac
       return cycle_summary.get();
     }
 
+    /** Buckling analyses: buckling.csv (one row per mode); nullptr
+     * before the analysis. */
+    const History *
+    buckling_history() const
+    {
+      return buckling_summary.get();
+    }
+
     /** Adaptive runs: the estimate of the last cycle. */
     const typename ErrorEstimator<dim>::Estimate &
     error_estimate() const
@@ -213,6 +221,7 @@ namespace amfrac
     typename ErrorEstimator<dim>::Estimate      last_zz;
     std::vector<std::pair<std::string, double>> last_row;
     std::unique_ptr<History>                    cycle_summary;
+    std::unique_ptr<History>                    buckling_summary;
     Timer                                       clock;
 
     std::unique_ptr<NewtonState> newton;
@@ -305,6 +314,17 @@ namespace amfrac
     run_linear();
     void
     run_newton();
+    /** Buckling subsection: the lowest positive load factors of the state
+     * of the last step at @p t, with K factorized in @p solver. */
+    void
+    analyse_buckling(LinearSolver &solver, const double t);
+    /** buckling.csv (load factors and the loads they give) and the modes
+     * as buckling_modes.pvd, each scaled to a largest displacement of 1. */
+    void
+    write_buckling_modes(const std::vector<double> &factors,
+                         std::vector<Vector>        modes,
+                         const std::vector<double> &residuals,
+                         const double               t);
     /** Time integration = explicit: central differences, lumped mass. */
     void
     run_explicit();

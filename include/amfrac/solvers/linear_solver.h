@@ -78,6 +78,13 @@ namespace amfrac
     Report
     solve(Vector &x, const Vector &b);
 
+    /** x_j = A^-1 b_j for every j: one forward and backward substitution
+     * sweep over all right-hand sides with the direct solver (faster per
+     * vector than one by one), one CG solve each otherwise. The residual
+     * check of set_check_residual() applies to each. */
+    Report
+    solve(std::vector<Vector> &x, const std::vector<Vector> &b);
+
     std::string
     name() const;
 
@@ -91,6 +98,11 @@ namespace amfrac
     std::vector<std::vector<double>>                   coordinates;
     bool                                               symmetric      = true;
     bool                                               check_residual = true;
+
+    /** Throws CollectiveError if A x = b is far from satisfied (only if
+     * check_residual). */
+    void
+    check_direct_residual(const Vector &x, const Vector &b) const;
 
     /** Numeric factorization; throws CollectiveError if singular. */
     void

@@ -1,0 +1,136 @@
+// Linear buckling of the last converged static state (subsection
+// Buckling): K_G from its stress, the lowest positive load factors of
+// (K + lambda K_G) v = 0 with the factorization of K the static solve left,
+// buckling.csv and the modes as a VTU series.
+#include <amfrac/postprocess/vtu_series.h>
+#include <amfrac/simulator/simulator.h>
+#include <amfrac/solvers/buckling_eigensolver.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/numerics/data_out.h>
+
+namespace amfrac
+{
+  template <int dim>
+  void
+  Simulator<dim>::analyse_buckling(LinearSolver &solver, const double t)
+  {
+    TimerOutput::Scope             scope(timer, "buckling");
+    Timer                          watch;
+    TrilinosWrappers::SparseMatrix geometric;
+    assembler.reinit_matrix(constraints, geometric);
+    assembler.assemble_geometric_matrix(relevant_solution,
+                                        constraints,
+                                        geometric);
+    const auto                   &b = parameters.buckling;
+    BucklingEigensolver::Settings settings;
+    settings.n_modes        = b.n_modes;
+    settings.block_size     = b.block_size;
+    settings.tolerance      = b.tolerance;
+    settings.max_basis_size = b.max_basis_size;
+    // The eigensolver checks its own residuals.
+    solver.set_check_residual(false);
+    const auto result = BucklingEigensolver(settings).solve(
+      [&](std::vector<Vector> &x, const std::vector<Vector> &rhs) {
+        solver.solve(x, rhs);
+      },
+      system_matrix,
+      geometric,
+      [&](const types::global_dof_index i) {
+        return !constraints.is_constrained(i);
+      },
+      solution);
+    pcout << "  buckling: " << result.load_factors.size()
+          << " positive load factor(s) from " << result.n_solves << " solves, "
+          << watch.wall_time() << " s" << std::endl;
+    if (result.load_factors.empty())
+      pcout << "  buckling: warning: no positive load factor among the "
+            << b.n_modes
+            << " wanted: the load of the last step does not buckle the "
+               "laminate (reversed, it may)"
+            << std::endl;
+    write_buckling_modes(result.load_factors,
+                         result.modes,
+                         result.residuals,
+                         t);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_buckling_modes(const std::vector<double> &factors,
+                                       std::vector<Vector>        modes,
+                                       const std::vector<double> &residuals,
+                                       const double               t)
+  {
+    AffineConstraints<double> homogeneous;
+    make_constraints(t, homogeneous, true);
+    buckling_summary
+      = std::make_unique<History>(parameters.output.directory + "/buckling.csv",
+                                  Utilities::MPI::this_mpi_process(comm) == 0);
+    std::vector<std::pair<double, std::string>> records;
+    Vector                 relevant(dof_layer.locally_owned_dofs(),
+                    dof_layer.locally_relevant_dofs(),
+                    comm);
+    dealii::Vector<double> copies;
+    const char            *axis = "xyz";
+    for (unsigned int k = 0; k < factors.size(); ++k)
+      {
+        homogeneous.distribute(modes[k]);
+        // Largest displacement 1, positive: a shape, not an amplitude.
+        const double largest  = Utilities::MPI::max(modes[k].max(), comm);
+        const double smallest = Utilities::MPI::min(modes[k].min(), comm);
+        modes[k] /= largest >= -smallest ? largest : smallest;
+        relevant = modes[k];
+        dof_layer.expand(relevant, copies);
+
+        std::vector<std::pair<std::string, double>> row
+          = {{"mode", k + 1},
+             {"load_factor", factors[k]},
+             {"residual", residuals[k]}};
+        // The loads at buckling: the load factor times each force of the
+        // last step's history row.
+        for (const auto &[name, value] : last_row)
+          if (name.rfind("force_", 0) == 0 || name.rfind("reaction_", 0) == 0)
+            row.emplace_back("critical_" + name, factors[k] * value);
+        const auto values = probe->evaluate(copies);
+        for (unsigned int p = 0; p < values.size(); ++p)
+          for (unsigned int d = 0; d < dim; ++d)
+            row.emplace_back("p" + std::to_string(p) + "_u" + axis[d],
+                             values[p].displacement[d]);
+        buckling_summary->add_row(row);
+        pcout << "    mode " << k + 1 << ": load factor " << factors[k]
+              << " (residual " << residuals[k] << ")" << std::endl;
+
+        if (!parameters.output.write_vtu)
+          continue;
+        DataOut<dim> data_out;
+        data_out.set_flags(fast_vtk_flags());
+        data_out.attach_dof_handler(dof_layer.copy_handler());
+        data_out.add_data_vector(
+          copies,
+          std::vector<std::string>(dim, "mode"),
+          DataOut<dim>::type_dof_data,
+          std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+            dim, DataComponentInterpretation::component_is_part_of_vector));
+        data_out.build_patches(dof_layer.get_mapping(),
+                               dof_layer.get_fe().degree,
+                               DataOut<dim>::curved_boundary);
+        // The series' "time" is the mode number.
+        write_vtu_step(data_out,
+                       parameters.output.directory,
+                       "buckling_mode-" + Utilities::int_to_string(k + 1, 3),
+                       "buckling_modes.pvd",
+                       k + 1,
+                       records,
+                       comm);
+      }
+  }
+
+
+
+  template void
+  Simulator<2>::analyse_buckling(LinearSolver &, const double);
+  template void
+  Simulator<3>::analyse_buckling(LinearSolver &, const double);
+} // namespace amfrac
