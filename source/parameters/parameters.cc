@@ -1430,7 +1430,7 @@ namespace amfrac
                         "0",
                         Patterns::Integer(0, 32),
                         "Vectors per block of the block Lanczos iteration "
-                        "(0: min(k, 4) for k modes). A block of at least "
+                        "(0: min(k, 2) for k modes). A block of at least "
                         "m finds a load factor of multiplicity m (equal "
                         "modes of a symmetric structure) reliably; a "
                         "smaller one finds the copies only through "
@@ -1461,12 +1461,14 @@ namespace amfrac
       tolerance      = prm.get_double("Tolerance");
       max_basis_size = prm.get_integer("Max basis size");
       prm.leave_subsection();
-      const unsigned int block
-        = block_size > 0 ? block_size : std::min(n_modes, 4u);
-      if (n_modes > 0 && max_basis_size < n_modes + 2 * block)
+      // A block of 2 finds the pairs of equal modes of symmetric plates
+      // for 1.5 times the solves of single-vector Lanczos (4: 2.4 times).
+      if (block_size == 0)
+        block_size = std::max(std::min(n_modes, 2u), 1u);
+      if (n_modes > 0 && max_basis_size < n_modes + 2 * block_size)
         throw InputError("Buckling/Max basis size",
                          "must be at least Number of modes plus two blocks ("
-                           + std::to_string(n_modes + 2 * block) + ")");
+                           + std::to_string(n_modes + 2 * block_size) + ")");
       if (!(tolerance > 0))
         throw InputError("Buckling/Tolerance", "must be positive");
     }

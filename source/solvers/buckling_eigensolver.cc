@@ -130,9 +130,8 @@ namespace amfrac
     const std::function<bool(types::global_dof_index)> &is_free,
     const Vector                                       &layout) const
   {
-    const unsigned int k = settings.n_modes;
-    const unsigned int p
-      = settings.block_size > 0 ? settings.block_size : std::min(k, 4u);
+    const unsigned int  k = settings.n_modes;
+    const unsigned int  p = std::max(settings.block_size, 1u);
     KrylovBasis         basis(K, K_G, layout);
     std::vector<Vector> block(p, layout), rhs(p, layout);
     std::vector<double> coordinates;

@@ -39,8 +39,8 @@ namespace amfrac
     struct Settings
     {
       unsigned int n_modes = 1;
-      /** 0: min(n_modes, 4). */
-      unsigned int block_size = 0;
+      /** Vectors per block (at least 1). */
+      unsigned int block_size = 2;
       double       tolerance  = 1e-8;
       /** The largest basis (vectors) before giving up. */
       unsigned int max_basis_size = 240;
