@@ -1398,11 +1398,6 @@ namespace amfrac
                          "Geometry/2D model = in-plane has no out-of-plane "
                          "displacement to buckle into; use Dimension = 3 or "
                          "2D model = cross-section");
-      if (!cohesive.interfaces.empty())
-        throw InputError(name,
-                         "linear buckling of a state with cohesive "
-                         "interfaces is not available yet; leave "
-                         "Cohesive interfaces/Interfaces empty");
       if (adaptivity.active())
         throw InputError(name,
                          "linear buckling after adaptive refinement cycles "

@@ -2,25 +2,75 @@
 // Buckling): K_G from its stress, the lowest positive load factors of
 // (K + lambda K_G) v = 0 with the factorization of K the static solve left,
 // buckling.csv and the modes as a VTU series.
+#include <amfrac/parameters/input_error.h>
 #include <amfrac/postprocess/vtu_series.h>
 #include <amfrac/simulator/simulator.h>
 #include <amfrac/solvers/buckling_eigensolver.h>
+#include <array>
 #include <deal.II/base/mpi.h>
 #include <deal.II/numerics/data_out.h>
+#include <sstream>
 
 namespace amfrac
 {
   template <int dim>
   void
-  Simulator<dim>::analyse_buckling(LinearSolver &solver, const double t)
+  Simulator<dim>::analyse_newton_buckling(LinearSolver &solver, const double t)
+  {
+    // K must be symmetric positive definite: the tangent of an elastic
+    // interface state (intact bonds, open cracks, frictionless contact).
+    // The interface points read the neighbours' values: a ghosted copy.
+    relevant_solution = newton->converged_solution;
+    const auto points = interfaces->output_points(relevant_solution);
+    using Record      = InterfacePointRecord<dim>;
+    std::array<std::size_t, 4> count{};
+    for (const auto &point : points)
+      ++count[point.status];
+    for (auto &n : count)
+      n = Utilities::MPI::sum(n, comm);
+    pcout << "  buckling of the Newton state at t=" << t
+          << ": interface points " << count[Record::intact] << " bonded, "
+          << count[Record::debonded] << " open, " << count[Record::contact]
+          << " in contact, " << count[Record::softening] << " softening"
+          << std::endl;
+    const std::size_t softening = count[Record::softening];
+    const std::size_t rubbing
+      = parameters.cohesive.friction > 0 ? count[Record::contact] : 0;
+    if (softening > 0 || rubbing > 0)
+      {
+        std::ostringstream message;
+        message << "linear buckling needs a symmetric, positive definite "
+                   "tangent, but at t="
+                << t << " " << softening << " interface point(s) soften and "
+                << rubbing
+                << " are in frictional contact: analyse a state before "
+                   "damage starts (a shorter Time/End time), or set "
+                   "Cohesive interfaces/Friction coefficient = 0";
+        throw CollectiveError(message.str());
+      }
+    update_residual(newton->converged_solution, &system_matrix);
+    solver.initialize(system_matrix,
+                      rigid_body_modes(),
+                      dim,
+                      owned_node_coordinates());
+    solution          = newton->converged_solution;
+    relevant_solution = solution;
+    analyse_buckling(solver, newton->increment_constraints, t);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::analyse_buckling(LinearSolver                    &solver,
+                                   const AffineConstraints<double> &fixed,
+                                   const double                     t)
   {
     TimerOutput::Scope             scope(timer, "buckling");
     Timer                          watch;
     TrilinosWrappers::SparseMatrix geometric;
-    assembler.reinit_matrix(constraints, geometric);
-    assembler.assemble_geometric_matrix(relevant_solution,
-                                        constraints,
-                                        geometric);
+    assembler.reinit_matrix(fixed, geometric);
+    assembler.assemble_geometric_matrix(relevant_solution, fixed, geometric);
     const auto                   &b = parameters.buckling;
     BucklingEigensolver::Settings settings;
     settings.n_modes        = b.n_modes;
@@ -35,9 +85,7 @@ namespace amfrac
       },
       system_matrix,
       geometric,
-      [&](const types::global_dof_index i) {
-        return !constraints.is_constrained(i);
-      },
+      [&](const types::global_dof_index i) { return !fixed.is_constrained(i); },
       solution);
     pcout << "  buckling: " << result.load_factors.size()
           << " positive load factor(s) from " << result.n_solves << " solves, "
@@ -130,7 +178,15 @@ namespace amfrac
 
 
   template void
-  Simulator<2>::analyse_buckling(LinearSolver &, const double);
+  Simulator<2>::analyse_buckling(LinearSolver &,
+                                 const AffineConstraints<double> &,
+                                 const double);
   template void
-  Simulator<3>::analyse_buckling(LinearSolver &, const double);
+  Simulator<3>::analyse_buckling(LinearSolver &,
+                                 const AffineConstraints<double> &,
+                                 const double);
+  template void
+  Simulator<2>::analyse_newton_buckling(LinearSolver &, const double);
+  template void
+  Simulator<3>::analyse_newton_buckling(LinearSolver &, const double);
 } // namespace amfrac

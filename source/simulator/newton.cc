@@ -710,6 +710,8 @@ namespace amfrac
             dt   = std::min(2 * dt, nominal);
           }
       }
+    if (parameters.buckling.active())
+      analyse_newton_buckling(solver, t);
     std::sort(iterations.begin(), iterations.end());
     pcout << "  " << step << " steps, " << total_iterations
           << " Newton iterations, " << n_factorizations

@@ -446,7 +446,7 @@ namespace amfrac
                      {"load_work", energies.load_work}});
       }
     if (parameters.buckling.active())
-      analyse_buckling(solver, n_steps * dt);
+      analyse_buckling(solver, constraints, n_steps * dt);
   }
 
 

@@ -297,7 +297,7 @@ subsection Cohesive interfaces
 end"
 expect in_plane_unsymmetric "Geometry/Stacking sequence" "$(printf '%s\n' "$in_plane" | sed 's|\[0/90\]s|[0/90]|')"
 # Linear buckling: only of a static state with out-of-plane freedom and
-# without cohesive interfaces or refinement cycles (for now).
+# without refinement cycles (for now).
 buckling='
 subsection Buckling
   set Number of modes = 2
@@ -306,10 +306,6 @@ expect buckling_in_plane "Buckling/Number of modes" "$in_plane$buckling"
 expect buckling_explicit "Buckling/Number of modes" "$base$buckling
 subsection Time
   set Time integration = explicit
-end"
-expect buckling_interfaces "Buckling/Number of modes" "$base$buckling
-subsection Cohesive interfaces
-  set Interfaces = all
 end"
 expect buckling_adaptivity "Buckling/Number of modes" "$base$buckling
 subsection Adaptivity

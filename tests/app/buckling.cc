@@ -3,6 +3,12 @@
 //     orthotropic (the shipped [0_4] scene) and isotropic: the two lowest
 //     critical forces within 1 % of the clamped-clamped Euler values with
 //     Engesser's shear correction; mode 1 symmetric, mode 2 antisymmetric.
+//   thin_film <buckling_thin_film_2d.prm>: a delaminated strip, the film's
+//     local buckling within 5 % of the thin-film model (below it), the
+//     bonded strip within 1 % of Euler-Engesser (states with cohesive
+//     interfaces: the Newton tangent).
+//   softening <dcb_2d.prm>: a state with softening interface points is
+//     refused with the reason.
 //   plate <buckling_plate.prm>: the specially orthotropic [0/90]s plate,
 //     simply supported, under uniaxial compression: lambda_1 within 2 % of
 //     classical plate theory for a thin plate (a/h = 100), clearly below it
@@ -195,6 +201,77 @@ namespace
     CHECK(thick < 0.9);
     CHECK(thick < thin - 0.1);
   }
+  /** The applied force at the first buckling load of the thin-film scene
+   * with the delamination @p l long (0: none) and its log. */
+  double
+  thin_film_force(const std::string &file, const double l)
+  {
+    std::ostringstream appended;
+    appended << "subsection Cohesive interfaces\n";
+    if (l > 0)
+      appended << " set Pre-crack region = abs(x - 50) < " << l / 2 << "\n";
+    else
+      appended << " set Pre-crack interfaces =\n";
+    appended << "end\nsubsection Output\n set Field format = none\nend\n";
+    const auto     simulator = amfrac_test::run_scene<2>(file, appended.str());
+    const History &modes     = *simulator->buckling_history();
+    CHECK(modes.n_rows() == 2);
+    return -modes.value(0, "critical_reaction_x+_x");
+  }
+
+  /** The delaminated strip: the film's force at the first buckling load
+   * against the thin-film model 4 pi^2 D_s / l^2, which clamps the film's
+   * ends; the bonded strip against Euler-Engesser. */
+  void
+  thin_film(const std::string &file)
+  {
+    const double t_s = 0.2, t = 2;
+    const Strip  film{135000, 10000, 0.3, 5000, t_s, 40};
+    const double N_40 = thin_film_force(file, 40) * t_s / t;
+    std::cout << "l = 40 mm: film force " << N_40 << ", thin-film model "
+              << film.euler(beta_L_1) << " (ratio "
+              << N_40 / film.euler(beta_L_1) << ")" << std::endl;
+    CHECK_CLOSE(N_40 / film.euler(beta_L_1), 1., 5e-2);
+    // The film's ends rotate with the bonded part, which lowers the load
+    // below the clamped model, less so for a longer film.
+    CHECK(N_40 < film.euler(beta_L_1));
+    const Strip  short_film{135000, 10000, 0.3, 5000, t_s, 20};
+    const double N_20 = thin_film_force(file, 20) * t_s / t;
+    std::cout << "l = 20 mm: film force " << N_20 << ", thin-film model "
+              << short_film.euler(beta_L_1) << " (ratio "
+              << N_20 / short_film.euler(beta_L_1) << ")" << std::endl;
+    CHECK(N_20 / short_film.euler(beta_L_1) < N_40 / film.euler(beta_L_1));
+    // Bonded everywhere: the strip buckles as a whole, the interface's
+    // penalty barely softening it.
+    const Strip  strip{135000, 10000, 0.3, 5000, t, 100};
+    const double N = thin_film_force(file, 0);
+    std::cout << "bonded: " << N << ", Euler-Engesser "
+              << strip.critical(beta_L_1) << std::endl;
+    CHECK_CLOSE(N / strip.critical(beta_L_1), 1., 1e-2);
+  }
+
+  /** A state with softening interface points has no symmetric positive
+   * definite tangent: the analysis is refused with the reason. */
+  void
+  softening_state(const std::string &file)
+  {
+    bool refused = false;
+    try
+      {
+        amfrac_test::run_scene<2>(
+          file,
+          "subsection Time\n set End time = 2.6\n set Number of steps = "
+          "26\nend\nsubsection Buckling\n set Number of modes = 1\nend\n"
+          "subsection Output\n set Field format = none\n"
+          " set Directory = output-buckling-softening\nend\n");
+      }
+    catch (const std::exception &e)
+      {
+        std::cout << "refused: " << e.what() << std::endl;
+        refused = std::string(e.what()).find("soften") != std::string::npos;
+      }
+    CHECK(refused);
+  }
 } // namespace
 
 
@@ -208,9 +285,14 @@ main(int argc, char **argv)
     strip(argv[2]);
   else if (what == "plate")
     plate(argv[2]);
+  else if (what == "thin_film")
+    thin_film(argv[2]);
+  else if (what == "softening")
+    softening_state(argv[2]);
   else
     {
-      std::cerr << "usage: app_buckling strip|plate FILE\n";
+      std::cerr << "usage: app_buckling strip|plate|thin_film|softening "
+                   "FILE\n";
       return 2;
     }
   return amfrac_test::summary();

@@ -315,9 +315,17 @@ namespace amfrac
     void
     run_newton();
     /** Buckling subsection: the lowest positive load factors of the state
-     * of the last step at @p t, with K factorized in @p solver. */
+     * of the last step at @p t (relevant_solution), with K factorized in
+     * @p solver and the rows @p fixed constrains left out. */
     void
-    analyse_buckling(LinearSolver &solver, const double t);
+    analyse_buckling(LinearSolver                    &solver,
+                     const AffineConstraints<double> &fixed,
+                     const double                     t);
+    /** The same for the converged Newton state: K is its tangent (bulk
+     * and interfaces), which must be symmetric positive definite (no
+     * softening point, no frictional contact: CollectiveError). */
+    void
+    analyse_newton_buckling(LinearSolver &solver, const double t);
     /** buckling.csv (load factors and the loads they give) and the modes
      * as buckling_modes.pvd, each scaled to a largest displacement of 1. */
     void
