@@ -7,6 +7,7 @@
 //     local buckling within 5 % of the thin-film model (below it), the
 //     bonded strip within 1 % of Euler-Engesser (states with cohesive
 //     interfaces: the Newton tangent).
+//   panel <delaminated_panel_2d.prm>: the seed's panel's local mode.
 //   softening <dcb_2d.prm>: a state with softening interface points is
 //     refused with the reason.
 //   plate <buckling_plate.prm>: the specially orthotropic [0/90]s plate,
@@ -250,6 +251,28 @@ namespace
     CHECK_CLOSE(N / strip.critical(beta_L_1), 1., 1e-2);
   }
 
+  /** The seed's panel (prm/delaminated_panel_2d.prm): mode 1 is the
+   * 4-ply sublaminate alone, at a load a little below the thin-film
+   * model's (its ends rotate: 0.89 of it for t_s / l = 0.0135). */
+  void
+  panel(const std::string &file)
+  {
+    const auto simulator = amfrac_test::run_scene<2>(
+      file, "subsection Output\n set Field format = none\nend\n");
+    const History &modes = *simulator->buckling_history();
+    CHECK(modes.n_rows() == 2);
+    const double t_s = 4 * 0.127, t = 20 * 0.127;
+    const Strip  film{135000, 10000, 0.3, 5000, t_s, 0.49 * 76.6};
+    const double local = -modes.value(0, "critical_reaction_x+_x");
+    const double model = film.euler(beta_L_1) * t / t_s;
+    std::cout << "panel: local buckling " << local << " N/mm ("
+              << local / 4.448222 * 25.4 << " lbf/in), thin-film model "
+              << model << std::endl;
+    CHECK(local < model && local > 0.85 * model);
+    CHECK_CLOSE(modes.value(0, "p0_uy"), 1., 1e-2);
+    CHECK(std::abs(modes.value(0, "p1_uy")) < 0.05);
+  }
+
   /** A state with softening interface points has no symmetric positive
    * definite tangent: the analysis is refused with the reason. */
   void
@@ -287,11 +310,13 @@ main(int argc, char **argv)
     plate(argv[2]);
   else if (what == "thin_film")
     thin_film(argv[2]);
+  else if (what == "panel")
+    panel(argv[2]);
   else if (what == "softening")
     softening_state(argv[2]);
   else
     {
-      std::cerr << "usage: app_buckling strip|plate|thin_film|softening "
+      std::cerr << "usage: app_buckling strip|plate|thin_film|panel|softening "
                    "FILE\n";
       return 2;
     }
