@@ -6,6 +6,7 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
+#include <limits>
 
 namespace amfrac
 {
@@ -573,6 +574,12 @@ namespace amfrac
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = 0; j < n; ++j)
         A(i, j) = K(i, j) / std::sqrt(m(i) * m(j));
+    // LAPACK fails on non-finite entries (an overflowing stiffness): the
+    // caller reports an infinite frequency as a useless time step.
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < n; ++j)
+        if (!std::isfinite(A(i, j)))
+          return std::numeric_limits<double>::infinity();
     A.compute_eigenvalues();
     double largest = 0;
     for (unsigned int i = 0; i < n; ++i)

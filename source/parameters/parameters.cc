@@ -299,6 +299,25 @@ namespace amfrac
           s.S13                = get("S13", m);
           s.S23                = get("S23", m);
           const std::string at = " (material '" + mat.name + "')";
+          // Moduli beyond 1e8 MPa (80 times diamond's) or densities beyond
+          // 1e-6 t/mm^3 (40 times osmium's) are unit mistakes (Pa, kg/m^3),
+          // and would overflow the element matrices.
+          for (const char *key : {"E1", "E2", "E3", "G12", "G13", "G23"})
+            {
+              std::ostringstream value;
+              value << get(key, m);
+              require(std::abs(get(key, m)) <= 1e8,
+                      std::string("Materials/") + key,
+                      value.str()
+                        + " is above 1e8 MPa: moduli are in MPa "
+                          "(N/mm^2)"
+                        + at);
+            }
+          require(e.density <= 1e-6,
+                  "Materials/Density",
+                  "above 1e-6 t/mm^3: densities are in t/mm^3 (1600 kg/m^3 "
+                  "is 1.6e-9)"
+                    + at);
           try
             {
               stiffness_in_material_axes(e);

@@ -111,6 +111,11 @@ namespace amfrac
         springs = max_and_where(springs, spring_where, comm);
       }
     double stable = 2. / std::sqrt(bulk + springs);
+    if (!(stable > 0 && std::isfinite(stable)))
+      throw CollectiveError("the stable time step estimate is "
+                            + std::to_string(stable)
+                            + ": check the material constants (moduli in "
+                              "MPa, densities in t/mm^3) and the mesh");
     pcout << "  stable time step " << stable << " s: elements alone "
           << 2. / std::sqrt(bulk) << " s (at " << bulk_where << ")";
     if (interfaces)

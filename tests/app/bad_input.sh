@@ -296,6 +296,16 @@ subsection Cohesive interfaces
   set Interfaces = all
 end"
 expect in_plane_unsymmetric "Geometry/Stacking sequence" "$(printf '%s\n' "$in_plane" | sed 's|\[0/90\]s|[0/90]|')"
+# Unit mistakes: a modulus in Pa, a density in kg/m^3 (the fuzzer's
+# E = 1e300 overflowed the element matrices before this check).
+expect modulus_in_pascal "Materials/E1" "$base
+subsection Materials
+  set E1 = 135e9
+end"
+expect density_in_kg_per_m3 "Materials/Density" "$base
+subsection Materials
+  set Density = 1600
+end"
 # Linear buckling: only of a static state with out-of-plane freedom and
 # without refinement cycles (for now).
 buckling='

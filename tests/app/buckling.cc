@@ -51,6 +51,24 @@ namespace
   constexpr double beta_L_1 = 2 * pi;
   constexpr double beta_L_2 = 8.98681892;
 
+  /** An isotropic material (E = 70 GPa, nu = 0.3) as .prm text. */
+  const std::string isotropic
+    = "subsection Materials\n set E1 = 70000\n set E2 = 70000\n"
+      " set E3 = 70000\n set nu12 = 0.3\n set nu13 = 0.3\n"
+      " set nu23 = 0.3\n set G12 = 26923.08\n set G13 = 26923.08\n"
+      " set G23 = 26923.08\nend\n";
+
+  /** A square plate of side @p a on 10 x 10 elements as .prm text. */
+  std::string
+  square_plate(const double a)
+  {
+    std::ostringstream text;
+    text << "subsection Geometry\n set Length = " << a << "\n set Width = " << a
+         << "\n set Elements along length = 10\n"
+            " set Elements along width = 10\nend\n";
+    return text.str();
+  }
+
   /** The strip of @p file with @p materials appended: the two lowest
    * critical forces (load factor times the reaction) against @p strip. */
   void
@@ -86,12 +104,7 @@ namespace
     std::cout << "orthotropic [0_4] strip, L/h = 100" << std::endl;
     check_strip(file, "", {135000, 10000, 0.3, 5000, 1, 100});
     std::cout << "isotropic strip, L/h = 100" << std::endl;
-    check_strip(file,
-                "subsection Materials\n set E1 = 70000\n set E2 = 70000\n"
-                " set E3 = 70000\n set nu12 = 0.3\n set nu13 = 0.3\n"
-                " set nu23 = 0.3\n set G12 = 26923.08\n set G13 = 26923.08\n"
-                " set G23 = 26923.08\nend",
-                {70000, 70000, 0.3, 26923.08, 1, 100});
+    check_strip(file, isotropic, {70000, 70000, 0.3, 26923.08, 1, 100});
   }
 
   /** lambda_1 of the [0/90]s plate by classical plate theory (m = n = 1,
@@ -116,11 +129,8 @@ namespace
   plate_factor(const std::string &file, const double a)
   {
     std::ostringstream appended;
-    appended << "subsection Geometry\n set Length = " << a
-             << "\n set Width = " << a
-             << "\n set Elements along length = 10\n"
-                " set Elements along width = 10\nend\n"
-                "subsection Buckling\n set Number of modes = 1\nend\n"
+    appended << square_plate(a)
+             << "subsection Buckling\n set Number of modes = 1\nend\n"
                 "subsection Output\n set Field format = none\n"
                 " set Point values = "
              << a / 2 << ", " << a / 2 << ", 1\nend\n";
@@ -147,15 +157,8 @@ namespace
   {
     const double       a = 200, h = 2, E = 70000, nu = 0.3;
     std::ostringstream appended;
-    appended << "subsection Geometry\n set Length = " << a
-             << "\n set Width = " << a
-             << "\n set Elements along length = 10\n"
-                " set Elements along width = 10\nend\n"
-                "subsection Materials\n set E1 = 70000\n set E2 = 70000\n"
-                " set E3 = 70000\n set nu12 = 0.3\n set nu13 = 0.3\n"
-                " set nu23 = 0.3\n set G12 = 26923.08\n set G13 = 26923.08\n"
-                " set G23 = 26923.08\nend\n"
-                "subsection Boundary conditions\n";
+    appended << square_plate(a) << isotropic
+             << "subsection Boundary conditions\n";
     const char *faces[4] = {"x-", "x+", "y-", "y+"};
     const char *moves[4]
       = {"0.01*t; 0; 0", "-0.01*t; 0; 0", "0; 0.01*t; 0", "0; -0.01*t; 0"};
