@@ -136,9 +136,9 @@ namespace amfrac
     std::vector<Vector> block(p, layout), rhs(p, layout);
     std::vector<double> coordinates;
     unsigned int        seed = 0;
-    // Append @p w, or fresh start vectors in its place if it is dependent
-    // (the Krylov space became invariant); false if even those add
-    // nothing: the free space is exhausted.
+    // Append w, or fresh start vectors in its place if it is dependent
+    // (the Krylov space became invariant); throws if even those add
+    // nothing (the free space is exhausted).
     const auto append_or_restart = [&](Vector &w) {
       if (basis.append(w, coordinates))
         return;
@@ -183,8 +183,10 @@ namespace amfrac
             message << "the buckling eigenvalue iteration did not converge "
                        "with "
                     << n << " basis vectors (relative residual "
-                    << *std::max_element(result.residuals.begin(),
-                                         result.residuals.end())
+                    << (result.residuals.empty() ?
+                          std::numeric_limits<double>::infinity() :
+                          *std::max_element(result.residuals.begin(),
+                                            result.residuals.end()))
                     << "); raise Buckling/Max basis size";
             throw std::runtime_error(message.str());
           }
