@@ -1417,11 +1417,6 @@ namespace amfrac
                          "Geometry/2D model = in-plane has no out-of-plane "
                          "displacement to buckle into; use Dimension = 3 or "
                          "2D model = cross-section");
-      if (adaptivity.active())
-        throw InputError(name,
-                         "linear buckling after adaptive refinement cycles "
-                         "is not available yet; set Adaptivity/Refinement "
-                         "cycles = 0");
     }
 
 
@@ -1439,7 +1434,9 @@ namespace amfrac
         "the geometric stiffness of the stress of that step (0: no "
         "buckling analysis). lambda multiplies the whole load of the last "
         "step, prescribed displacements included. Written to buckling.csv "
-        "and, with VTU output, to buckling_modes.pvd.");
+        "and, with VTU output, to buckling_modes.pvd. With Adaptivity/"
+        "Refinement cycles, every cycle analyses its mesh (a cycle column "
+        "in buckling.csv, lambda_1 in the convergence table).");
       prm.declare_entry("Block size",
                         "0",
                         Patterns::Integer(0, 32),

@@ -33,6 +33,8 @@ namespace amfrac
         table.add_value("unknowns", dof_layer.n_dofs());
         table.add_value("zz_error", last_zz.error);
         table.add_value("zz_relative", last_zz.relative());
+        if (parameters.buckling.active())
+          table.add_value("lambda_1", lowest_load_factor);
         if (adaptivity.strategy
               == parameters::Adaptivity::Strategy::error_target
             && last_zz.relative() <= adaptivity.target_error)
@@ -40,6 +42,8 @@ namespace amfrac
       }
     table.set_scientific("zz_error", true);
     table.set_scientific("zz_relative", true);
+    if (parameters.buckling.active())
+      table.set_precision("lambda_1", 8);
     table.evaluate_convergence_rates("zz_error",
                                      "unknowns",
                                      ConvergenceTable::reduction_rate_log2,

@@ -96,6 +96,8 @@ namespace amfrac
             << " wanted: the load of the last step does not buckle the "
                "laminate (reversed, it may)"
             << std::endl;
+    lowest_load_factor
+      = result.load_factors.empty() ? 0. : result.load_factors.front();
     write_buckling_modes(result.load_factors,
                          result.modes,
                          result.residuals,
@@ -113,9 +115,15 @@ namespace amfrac
   {
     AffineConstraints<double> homogeneous;
     make_constraints(t, homogeneous, true);
-    buckling_summary
-      = std::make_unique<History>(parameters.output.directory + "/buckling.csv",
-                                  Utilities::MPI::this_mpi_process(comm) == 0);
+    // One table for the run: refinement cycles add their rows.
+    if (!buckling_summary)
+      buckling_summary = std::make_unique<History>(
+        parameters.output.directory + "/buckling.csv",
+        Utilities::MPI::this_mpi_process(comm) == 0);
+    const bool        cycles = parameters.adaptivity.active();
+    const std::string prefix
+      = cycles ? "buckling_mode-c" + Utilities::int_to_string(cycle, 2) + "-" :
+                 "buckling_mode-";
     std::vector<std::pair<double, std::string>> records;
     Vector                 relevant(dof_layer.locally_owned_dofs(),
                     dof_layer.locally_relevant_dofs(),
@@ -136,6 +144,8 @@ namespace amfrac
           = {{"mode", k + 1},
              {"load_factor", factors[k]},
              {"residual", residuals[k]}};
+        if (cycles)
+          row.insert(row.begin(), {"cycle", cycle});
         // The loads at buckling: the load factor times each force of the
         // last step's history row.
         for (const auto &[name, value] : last_row)
@@ -167,7 +177,7 @@ namespace amfrac
         // The series' "time" is the mode number.
         write_vtu_step(data_out,
                        parameters.output.directory,
-                       "buckling_mode-" + Utilities::int_to_string(k + 1, 3),
+                       prefix + Utilities::int_to_string(k + 1, 3),
                        "buckling_modes.pvd",
                        k + 1,
                        records,

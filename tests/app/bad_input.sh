@@ -306,8 +306,7 @@ expect density_in_kg_per_m3 "Materials/Density" "$base
 subsection Materials
   set Density = 1600
 end"
-# Linear buckling: only of a static state with out-of-plane freedom and
-# without refinement cycles (for now).
+# Linear buckling: only of a static state with out-of-plane freedom.
 buckling='
 subsection Buckling
   set Number of modes = 2
@@ -316,10 +315,6 @@ expect buckling_in_plane "Buckling/Number of modes" "$in_plane$buckling"
 expect buckling_explicit "Buckling/Number of modes" "$base$buckling
 subsection Time
   set Time integration = explicit
-end"
-expect buckling_adaptivity "Buckling/Number of modes" "$base$buckling
-subsection Adaptivity
-  set Refinement cycles = 1
 end"
 expect buckling_basis "Buckling/Max basis size" "$base
 subsection Buckling

@@ -8,6 +8,8 @@
 //     bonded strip within 1 % of Euler-Engesser (states with cohesive
 //     interfaces: the Newton tangent).
 //   panel <delaminated_panel_2d.prm>: the seed's panel's local mode.
+//   cycles <buckling_strip_2d.prm>: an analysis per refinement cycle, the
+//     load factor converging.
 //   softening <dcb_2d.prm>: a state with softening interface points is
 //     refused with the reason.
 //   plate <buckling_plate.prm>: the specially orthotropic [0/90]s plate,
@@ -17,6 +19,7 @@
 #include "scene.h"
 
 #include <cmath>
+#include <vector>
 
 using namespace amfrac;
 
@@ -276,6 +279,39 @@ namespace
     CHECK(std::abs(modes.value(0, "p1_uy")) < 0.05);
   }
 
+  /** The strip on a coarse mesh, refined uniformly twice: every cycle
+   * analyses its mesh, and lambda_1 converges (by more than 4x per
+   * halving of the elements) to the Euler-Engesser value. */
+  void
+  cycles(const std::string &file)
+  {
+    const auto simulator = amfrac_test::run_scene<2>(
+      file,
+      "subsection Geometry\n set Elements along length = 25\nend\n"
+      "subsection Adaptivity\n set Refinement cycles = 2\n"
+      " set Strategy = uniform\nend\n"
+      "subsection Output\n set Field format = none\nend\n");
+    const History &modes = *simulator->buckling_history();
+    CHECK(modes.n_rows() == 9);
+    std::vector<double> lambda;
+    for (unsigned int r = 0; r < modes.n_rows(); ++r)
+      if (modes.value(r, "mode") == 1)
+        {
+          CHECK(modes.value(r, "cycle") == lambda.size());
+          lambda.push_back(modes.value(r, "load_factor"));
+        }
+    CHECK(lambda.size() == 3);
+    std::cout << "lambda_1 by cycle: " << lambda[0] << ", " << lambda[1] << ", "
+              << lambda[2] << std::endl;
+    CHECK(std::abs(lambda[2] - lambda[1])
+          < 0.25 * std::abs(lambda[1] - lambda[0]));
+    const Strip strip{135000, 10000, 0.3, 5000, 1, 100};
+    CHECK_CLOSE(-modes.value(6, "critical_reaction_x+_x")
+                  / strip.critical(beta_L_1),
+                1.,
+                1e-2);
+  }
+
   /** A state with softening interface points has no symmetric positive
    * definite tangent: the analysis is refused with the reason. */
   void
@@ -315,12 +351,15 @@ main(int argc, char **argv)
     thin_film(argv[2]);
   else if (what == "panel")
     panel(argv[2]);
+  else if (what == "cycles")
+    cycles(argv[2]);
   else if (what == "softening")
     softening_state(argv[2]);
   else
     {
-      std::cerr << "usage: app_buckling strip|plate|thin_film|panel|softening "
-                   "FILE\n";
+      std::cerr
+        << "usage: app_buckling strip|plate|thin_film|panel|cycles|softening "
+           "FILE\n";
       return 2;
     }
   return amfrac_test::summary();

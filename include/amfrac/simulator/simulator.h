@@ -222,7 +222,10 @@ namespace amfrac
     std::vector<std::pair<std::string, double>> last_row;
     std::unique_ptr<History>                    cycle_summary;
     std::unique_ptr<History>                    buckling_summary;
-    Timer                                       clock;
+    /** The lowest positive load factor of the last buckling analysis (0:
+     * none). */
+    double lowest_load_factor = 0;
+    Timer  clock;
 
     std::unique_ptr<NewtonState> newton;
     bool                         solver_ready     = false;
