@@ -1,3 +1,4 @@
+#include <amfrac/checkpoint/checkpoint_store.h>
 #include <amfrac/parameters/input_error.h>
 #include <amfrac/parameters/parameters.h>
 #include <amfrac/simulator/simulator.h>
@@ -5,6 +6,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <string>
 
@@ -20,7 +22,16 @@ namespace
       "options:\n"
       "  -h, --help              this text\n"
       "  -p, --print-parameters  every parameter with its default, pattern\n"
-      "                          and documentation (units in brackets)\n";
+      "                          and documentation (units in brackets)\n"
+      "  --resume DIR            continue from the newest complete checkpoint\n"
+      "                          in DIR (Checkpoint/Directory, by default\n"
+      "                          <Output/Directory>/checkpoints) with the\n"
+      "                          parameters stored in it, or with FILE.prm\n"
+      "                          if given\n"
+      "\n"
+      "exit status: 0 done; 1 bad input or a failed run (the message names\n"
+      "the parameter or the cause); 2 usage; 75 stopped with a checkpoint\n"
+      "(SIGTERM, SIGINT or Checkpoint/Stop after step): resume it\n";
 
   void
   print_parameters()
@@ -59,6 +70,29 @@ namespace
       MPI_Abort(comm, 1);
     return 1;
   }
+
+  amfrac::CheckpointStore::Contents
+  read_checkpoint(const std::string &directory, const MPI_Comm comm)
+  {
+    const std::string folder = amfrac::CheckpointStore::newest(directory);
+    if (folder.empty())
+      throw amfrac::InputError("--resume: no complete checkpoint in '"
+                               + directory
+                               + "' (a folder checkpoint-<n> with run.h5)");
+    return amfrac::CheckpointStore::read(folder, comm);
+  }
+
+  template <int dim>
+  void
+  run(const amfrac::parameters::Parameters    &parameters,
+      const amfrac::CheckpointStore::Contents *checkpoint,
+      const MPI_Comm                           comm)
+  {
+    amfrac::Simulator<dim> simulator(parameters, comm);
+    if (checkpoint)
+      simulator.resume(*checkpoint);
+    simulator.run();
+  }
 } // namespace
 
 
@@ -71,10 +105,17 @@ main(int argc, char *argv[])
   const bool is_root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
   dealii::deal_II_exceptions::disable_abort_on_exception();
 
-  std::string file;
+  std::string file, resume_directory;
   for (int i = 1; i < argc; ++i)
     {
       const std::string arg = argv[i];
+      if (arg == "--resume")
+        {
+          if (i + 1 == argc)
+            return fail("--resume needs the checkpoint folder", is_root);
+          resume_directory = argv[++i];
+          continue;
+        }
       if (arg == "-h" || arg == "--help")
         {
           if (is_root)
@@ -94,7 +135,7 @@ main(int argc, char *argv[])
         return fail("more than one parameter file given", is_root);
       file = arg;
     }
-  if (file.empty())
+  if (file.empty() && resume_directory.empty())
     {
       if (is_root)
         std::cerr << usage;
@@ -103,16 +144,29 @@ main(int argc, char *argv[])
 
   try
     {
-      const auto parameters = amfrac::parameters::Parameters::from_file(file);
+      std::unique_ptr<amfrac::CheckpointStore::Contents> checkpoint;
+      if (!resume_directory.empty())
+        checkpoint = std::make_unique<amfrac::CheckpointStore::Contents>(
+          read_checkpoint(resume_directory, comm));
+      const auto parameters = file.empty() ?
+                                amfrac::parameters::Parameters::from_string(
+                                  checkpoint->run.get_text("parameters")) :
+                                amfrac::parameters::Parameters::from_file(file);
       if (parameters.dimension == 2)
-        amfrac::Simulator<2>(parameters, comm).run();
+        run<2>(parameters, checkpoint.get(), comm);
       else
-        amfrac::Simulator<3>(parameters, comm).run();
+        run<3>(parameters, checkpoint.get(), comm);
+    }
+  catch (const amfrac::RunInterrupted &e)
+    {
+      if (is_root)
+        std::cout << "amfrac: " << e.what() << std::endl;
+      return 75;
     }
   catch (const amfrac::InputError &e)
     {
       const std::string message = e.what();
-      return fail(message.find(file) == std::string::npos ?
+      return fail(message.find(file) == std::string::npos && !file.empty() ?
                     message + " [in " + file + "]" :
                     message,
                   is_root);

@@ -171,6 +171,7 @@ namespace amfrac
 
     Element element;
     element.coarse_cell = cell->id().get_coarse_cell_id();
+    element.cell        = cell->id();
     element.face        = face;
     element.box         = coarse_cell_box<dim>(cell);
     element.interface   = std::lower_bound(data.interfaces.begin(),

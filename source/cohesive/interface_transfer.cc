@@ -466,6 +466,96 @@ namespace amfrac
     return report;
   }
 
+  template <int dim>
+  void
+  CohesiveInterfaces<dim>::save(std::vector<std::int64_t> &keys,
+                                std::vector<double>       &states,
+                                std::vector<std::int64_t> &counters,
+                                const MPI_Comm             comm) const
+  {
+    keys.clear();
+    states.clear();
+    for (const Element &element : elements)
+      {
+        for (const unsigned int k : element.cell.template to_binary<dim>())
+          keys.push_back(k);
+        keys.push_back(element.face);
+        keys.push_back(element.converged.size());
+        for (unsigned int q = 0; q < element.converged.size(); ++q)
+          {
+            pack(element.converged[q], states);
+            states.push_back(element.status.empty() ? 0. : element.status[q]);
+          }
+      }
+    const unsigned long total = Utilities::MPI::sum(changes, comm),
+                        previous_total
+                        = Utilities::MPI::sum(previous_changes, comm);
+    const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
+    counters        = {root ? std::int64_t(total) : 0,
+                root ? std::int64_t(previous_total) : 0};
+  }
+
+
+
+  template <int dim>
+  void
+  CohesiveInterfaces<dim>::load(
+    const std::vector<const std::vector<std::int64_t> *> &keys,
+    const std::vector<const std::vector<double> *>       &states,
+    const std::vector<std::int64_t>                      &counters,
+    const MPI_Comm                                        comm)
+  {
+    constexpr unsigned int key_size = 6;
+    // (lower cell, face) -> the first value of its points.
+    std::map<std::pair<CellId, unsigned int>,
+             std::pair<const double *, std::int64_t>>
+      saved;
+    for (unsigned int part = 0; part < keys.size(); ++part)
+      {
+        const auto   &k     = *keys[part];
+        const double *value = states[part]->data();
+        for (std::size_t i = 0; i + key_size <= k.size(); i += key_size)
+          {
+            typename CellId::binary_type binary;
+            for (unsigned int j = 0; j < 4; ++j)
+              binary[j] = k[i + j];
+            // deal.II reads the dimension from these bits and divides by it.
+            if ((binary[1] & 3u) != dim)
+              throw std::runtime_error(
+                "an interface key of the checkpoint is not of a "
+                + std::to_string(dim) + "D mesh");
+            saved[{CellId(binary), static_cast<unsigned int>(k[i + 4])}]
+              = {value, k[i + 5]};
+            value += k[i + 5] * (state_size() + 1);
+          }
+      }
+    for (Element &element : elements)
+      {
+        const auto entry = saved.find({element.cell, element.face});
+        if (entry == saved.end()
+            || entry->second.second != std::int64_t(element.converged.size()))
+          throw std::runtime_error(
+            "the checkpoint has no interface state for face "
+            + std::to_string(element.face) + " of cell "
+            + element.cell.to_string()
+            + " (it was written for another mesh or interface rule)");
+        const double *value = entry->second.first;
+        element.status.assign(element.converged.size(), 0);
+        for (unsigned int q = 0; q < element.converged.size(); ++q)
+          {
+            element.converged[q] = unpack(value);
+            element.status[q] = static_cast<unsigned char>(value[state_size()]);
+            value += state_size() + 1;
+          }
+        element.trial = element.converged;
+      }
+    const bool root  = Utilities::MPI::this_mpi_process(comm) == 0;
+    changes          = root && counters.size() == 2 ? counters[0] : 0;
+    previous_changes = root && counters.size() == 2 ? counters[1] : 0;
+  }
+
+
+
   template class CohesiveInterfaces<2>;
   template class CohesiveInterfaces<3>;
 } // namespace amfrac

@@ -4,6 +4,7 @@
 #include <amfrac/parameters/input_error.h>
 #include <amfrac/parameters/parameters.h>
 #include <cctype>
+#include <cmath>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 #include <fstream>
@@ -1345,6 +1346,7 @@ namespace amfrac
       Output::declare_parameters(prm);
       Adaptivity::declare_parameters(prm);
       Buckling::declare_parameters(prm);
+      Checkpoint::declare_parameters(prm);
     }
 
 
@@ -1392,6 +1394,15 @@ namespace amfrac
           "interfaces; a linear scene adapts by Refinement cycles");
       buckling.parse_parameters(prm);
       check_buckling_input();
+      checkpoint.parse_parameters(prm, output.directory);
+      if (adaptivity.active() && checkpoint.by_count_or_stop())
+        throw InputError(checkpoint.every_n_steps > 0 ?
+                           "Checkpoint/Every n steps" :
+                           "Checkpoint/Stop after step",
+                         "refinement cycles (Adaptivity/Refinement cycles) "
+                         "repeat the whole run per mesh and cannot be "
+                         "resumed; a run that adapts during its load "
+                         "history (cohesive interfaces) can");
       if ((adaptivity.active() || adaptivity.during_history())
           && time.explicit_dynamics)
         throw InputError("Adaptivity/Refinement cycles",
@@ -1417,6 +1428,74 @@ namespace amfrac
                          "Geometry/2D model = in-plane has no out-of-plane "
                          "displacement to buckle into; use Dimension = 3 or "
                          "2D model = cross-section");
+    }
+
+
+
+    void
+    Checkpoint::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Checkpoint");
+      prm.declare_entry("Every n steps",
+                        "0",
+                        Patterns::Integer(0),
+                        "Write a checkpoint every this many load steps (0: "
+                        "not by count), and after the last one. Explicit "
+                        "runs count output steps (rows of history.csv). "
+                        "SIGTERM or SIGINT always ends a load-stepped run "
+                        "after the current step with a checkpoint.");
+      prm.declare_entry("Every minutes",
+                        "30",
+                        Patterns::Double(0),
+                        "Also write one when this much wall time [min] has "
+                        "passed since the last (0: not by time).");
+      prm.declare_entry("Keep",
+                        "2",
+                        Patterns::Integer(1),
+                        "Number of newest complete checkpoints kept; older "
+                        "ones are deleted.");
+      prm.declare_entry("Directory",
+                        "",
+                        Patterns::Anything(),
+                        "Folder of the checkpoints (empty: <Output "
+                        "directory>/checkpoints). A run that does not "
+                        "resume deletes the checkpoints it finds there.");
+      prm.declare_entry("Resume",
+                        "false",
+                        Patterns::Bool(),
+                        "Continue from the newest complete checkpoint in "
+                        "Directory if there is one (else start from the "
+                        "beginning), with this file's parameters; "
+                        "amfrac --resume DIR does the same with the "
+                        "parameters stored in the checkpoint.");
+      prm.declare_entry("Stop after step",
+                        "0",
+                        Patterns::Integer(0),
+                        "Write a checkpoint after this step and stop with "
+                        "exit status 75, as on SIGTERM (0: run to the "
+                        "end); splits a long run into jobs.");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Checkpoint::parse_parameters(ParameterHandler  &prm,
+                                 const std::string &output)
+    {
+      prm.enter_subsection("Checkpoint");
+      every_n_steps   = prm.get_integer("Every n steps");
+      every_minutes   = prm.get_double("Every minutes");
+      keep            = prm.get_integer("Keep");
+      directory       = prm.get("Directory");
+      resume          = prm.get_bool("Resume");
+      stop_after_step = prm.get_integer("Stop after step");
+      prm.leave_subsection();
+      require(std::isfinite(every_minutes),
+              "Checkpoint/Every minutes",
+              "must be a finite number");
+      if (directory.empty())
+        directory = output + "/checkpoints";
     }
 
 
@@ -1638,6 +1717,9 @@ namespace amfrac
           }
         Parameters parameters;
         parameters.parse_parameters(prm);
+        std::ostringstream text;
+        prm.print_parameters(text, ParameterHandler::ShortPRM);
+        parameters.text = text.str();
         return parameters;
       }
     } // namespace

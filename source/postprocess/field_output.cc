@@ -1,10 +1,14 @@
 #include <amfrac/postprocess/atomic_file.h>
 #include <amfrac/postprocess/field_output.h>
 #include <amfrac/postprocess/vtu_series.h>
+#include <boost/archive/text_iarchive.hpp>
+#include <boost/archive/text_oarchive.hpp>
+#include <boost/serialization/vector.hpp>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/numerics/data_out.h>
 #include <fstream>
+#include <sstream>
 
 namespace amfrac
 {
@@ -178,6 +182,51 @@ namespace amfrac
           rename_or_throw(xdmf + ".tmp", xdmf);
       }
   }
+
+  template <int dim>
+  std::string
+  FieldOutput<dim>::xdmf_state() const
+  {
+    std::ostringstream            text;
+    boost::archive::text_oarchive archive(text);
+    archive << xdmf_entries;
+    return text.str();
+  }
+
+
+
+  template <int dim>
+  void
+  FieldOutput<dim>::restore(
+    const std::vector<std::pair<double, std::string>> &records,
+    const std::string                                 &xdmf)
+  {
+    const MPI_Comm comm
+      = dofs.copy_handler().get_triangulation().get_communicator();
+    pvd_records = records;
+    if (parameters.write_vtu)
+      rewrite_pvd(parameters.directory,
+                  parameters.base_name + ".pvd",
+                  records,
+                  comm);
+    xdmf_entries.clear();
+    if (!xdmf.empty())
+      {
+        std::istringstream            text(xdmf);
+        boost::archive::text_iarchive archive(text);
+        archive >> xdmf_entries;
+      }
+    if (parameters.write_xdmf && !xdmf_entries.empty())
+      {
+        const std::string name = path(parameters.base_name + ".xdmf");
+        DataOut<dim>      data_out;
+        data_out.write_xdmf_file(xdmf_entries, name + ".tmp", comm);
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          rename_or_throw(name + ".tmp", name);
+      }
+  }
+
+
 
   template class StressPostprocessor<2>;
   template class StressPostprocessor<3>;

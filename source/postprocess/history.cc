@@ -26,6 +26,41 @@ namespace amfrac
 
 
 
+  namespace
+  {
+    std::string
+    format_row(const std::vector<double> &numbers)
+    {
+      std::ostringstream line;
+      line << std::setprecision(12);
+      for (unsigned int c = 0; c < numbers.size(); ++c)
+        line << (c ? "," : "") << numbers[c];
+      line << '\n';
+      return line.str();
+    }
+  } // namespace
+
+
+
+  void
+  History::restore(const std::vector<std::string>         &column_names,
+                   const std::vector<std::vector<double>> &rows)
+  {
+    columns = column_names;
+    values  = rows;
+    if (!is_writer || columns.empty())
+      return;
+    write_atomically(filename, [&](std::ostream &out) {
+      for (unsigned int c = 0; c < columns.size(); ++c)
+        out << (c ? "," : "") << columns[c];
+      out << '\n';
+      for (const auto &row : values)
+        out << format_row(row);
+    });
+  }
+
+
+
   void
   History::add_row(const std::vector<std::pair<std::string, double>> &row)
   {
@@ -44,22 +79,17 @@ namespace amfrac
     // rows are appended as one complete line each, so earlier rows are
     // never rewritten (a long run stays O(rows), not O(rows^2)) and a crash
     // can at most lose the line being written.
-    std::ostringstream line;
-    line << std::setprecision(12);
-    for (unsigned int c = 0; c < numbers.size(); ++c)
-      line << (c ? "," : "") << numbers[c];
-    line << '\n';
+    const std::string text = format_row(numbers);
     if (values.size() == 1)
       {
         write_atomically(filename, [&](std::ostream &out) {
           for (unsigned int c = 0; c < columns.size(); ++c)
             out << (c ? "," : "") << columns[c];
-          out << '\n' << line.str();
+          out << '\n' << text;
         });
         return;
       }
-    std::ofstream     out(filename, std::ios::app);
-    const std::string text = line.str();
+    std::ofstream out(filename, std::ios::app);
     out.write(text.data(), text.size());
     out.flush();
     if (!out)

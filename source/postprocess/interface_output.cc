@@ -76,6 +76,20 @@ namespace amfrac
 
 
   template <int dim>
+  void
+  InterfaceOutput<dim>::restore(
+    const std::vector<std::pair<double, std::string>> &records)
+  {
+    pvd_records = records;
+    rewrite_pvd(parameters.directory,
+                parameters.base_name + "-interfaces.pvd",
+                records,
+                comm);
+  }
+
+
+
+  template <int dim>
   const std::vector<DataOutBase::Patch<0, dim>> &
   InterfaceOutput<dim>::get_patches() const
   {

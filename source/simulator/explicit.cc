@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <deal.II/base/mpi.h>
+#include <sstream>
 
 namespace amfrac
 {
@@ -399,13 +400,44 @@ namespace amfrac
 
     if (interfaces)
       interfaces->set_time_step(dt);
-    double t = 0;
-    impose_prescribed(t, solution);
-    set_initial_velocity(free_inverse_mass, velocity);
-    update_damping();
-    evaluate(t);
-    initial_energy = strain_energy + kinetic_energy();
-    postprocess(0, t, reaction, ledger_row());
+    double        t = 0;
+    ExplicitState state;
+    state.dt      = dt;
+    state.vectors = {{"displacement", &solution},
+                     {"velocity", &velocity},
+                     {"acceleration", &acceleration},
+                     {"load", &load},
+                     {"reaction", &reaction},
+                     {"damping_force", &damping_force}};
+    if (restart)
+      {
+        restore_explicit(state);
+        relevant_solution = solution;
+        strain_energy     = state.strain_energy;
+        external_work     = state.external_work;
+        damping_work      = state.damping_work;
+        initial_energy    = state.initial_energy;
+        t                 = state.steps * dt;
+      }
+    else
+      {
+        impose_prescribed(t, solution);
+        set_initial_velocity(free_inverse_mass, velocity);
+        update_damping();
+        evaluate(t);
+        initial_energy = strain_energy + kinetic_energy();
+        postprocess(0, t, reaction, ledger_row());
+      }
+    unsigned long n    = state.steps;
+    const auto    save = [&](CheckpointData &run, CheckpointData &part) {
+      state.steps          = n;
+      state.strain_energy  = strain_energy;
+      state.external_work  = external_work;
+      state.damping_work   = damping_work;
+      state.initial_energy = initial_energy;
+      save_explicit(state, run, part);
+    };
+    const unsigned long n_start = n;
     // A progress line at most every 10 s of wall time, and at the end.
     using Clock                      = std::chrono::steady_clock;
     const Clock::time_point started  = Clock::now();
@@ -418,56 +450,79 @@ namespace amfrac
         return;
       reported = now;
       const double rate
-        = out * substeps / std::chrono::duration<double>(now - started).count();
+        = (n - n_start) / std::chrono::duration<double>(now - started).count();
       pcout << "  t = " << t << " s (" << 100. * out / n_out << " %), "
             << out * substeps << " steps, " << rate << " steps/s, about "
             << (n_out - out) * substeps / rate << " s to go" << std::endl;
     };
     Vector old_solution(owned, comm);
-    for (unsigned int out = 1; out <= parameters.time.n_steps; ++out)
+    // The state of the last output step: written if the run diverges.
+    Vector              last_good(solution);
+    unsigned int        last_good_step = n / substeps;
+    double              last_good_t    = n * dt;
+    const unsigned long n_total = static_cast<unsigned long>(substeps) * n_out;
+    while (n < n_total)
       {
-        for (unsigned int k = 0; k < substeps; ++k)
+        const unsigned int out = n / substeps + 1;
+        {
+          TimerOutput::Scope scope(timer, "time steps");
+          previous_load     = load;
+          previous_reaction = reaction;
+          previous_damping  = damping_force;
+          velocity.add(0.5 * dt, acceleration);
+          old_solution = solution;
+          solution.add(dt, velocity);
+          ++n;
+          t = n * dt;
+          impose_prescribed(t, solution);
+          update_damping();
+          evaluate(t);
+          velocity.add(0.5 * dt, acceleration);
+          displacement_step = solution;
+          displacement_step -= old_solution;
+          previous_load += load;
+          previous_reaction += reaction;
+          external_work += 0.5
+                           * (previous_load * displacement_step
+                              + previous_reaction * displacement_step);
+          if (damped)
+            {
+              previous_damping += damping_force;
+              damping_work += 0.5 * (previous_damping * displacement_step);
+            }
+          // A step above the critical one shows as strain energy
+          // growing beyond all the energy the run was given; a NaN in a
+          // load or in the response as a non-finite energy.
+          if (!std::isfinite(strain_energy)
+              || strain_energy
+                   > 10 * (std::abs(external_work) + initial_energy + 1e-300))
+            {
+              std::ostringstream what;
+              what << "the explicit solution diverged at t=" << t
+                   << " s (strain energy " << strain_energy << " N mm against "
+                   << external_work << " N mm of external work and "
+                   << initial_energy
+                   << " N mm at the start): reduce Time/Safety factor or "
+                      "Time/Time step, or look for a load that is not "
+                      "finite; the fields of the last output step (t="
+                   << last_good_t << " s) are written";
+              relevant_solution = last_good;
+              write_fields(last_good_step, last_good_t);
+              throw CollectiveError(what.str());
+            }
+        }
+        // A signal stops the run after any time step; the rest of the
+        // checkpoints fall on output steps.
+        const bool at_row = n % substeps == 0;
+        if (at_row)
           {
-            TimerOutput::Scope scope(timer, "time steps");
-            previous_load     = load;
-            previous_reaction = reaction;
-            previous_damping  = damping_force;
-            velocity.add(0.5 * dt, acceleration);
-            old_solution = solution;
-            solution.add(dt, velocity);
-            t = ((out - 1) * substeps + k + 1) * dt;
-            impose_prescribed(t, solution);
-            update_damping();
-            evaluate(t);
-            velocity.add(0.5 * dt, acceleration);
-            displacement_step = solution;
-            displacement_step -= old_solution;
-            previous_load += load;
-            previous_reaction += reaction;
-            external_work += 0.5
-                             * (previous_load * displacement_step
-                                + previous_reaction * displacement_step);
-            if (damped)
-              {
-                previous_damping += damping_force;
-                damping_work += 0.5 * (previous_damping * displacement_step);
-              }
-            // A step above the critical one shows as strain energy
-            // growing beyond all the energy the run was given.
-            if (!std::isfinite(strain_energy)
-                || strain_energy
-                     > 10 * (std::abs(external_work) + initial_energy + 1e-300))
-              throw CollectiveError(
-                "the explicit solution diverged at t=" + std::to_string(t)
-                + " s (strain energy " + std::to_string(strain_energy)
-                + " N mm against " + std::to_string(external_work)
-                + " N mm of external work and " + std::to_string(initial_energy)
-                + " N mm at the start): reduce Time/Safety factor or "
-                  "Time/Time step; the output up to the last interval is "
-                  "kept");
+            postprocess(out, t, reaction, ledger_row());
+            report_progress(out, t);
+            last_good      = solution;
+            last_good_step = out;
+            last_good_t    = t;
           }
-        postprocess(out, t, reaction, ledger_row());
-        report_progress(out, t);
+        checkpoint_after_step(out, n, at_row, n == n_total, save);
       }
     timer.print_wall_time_statistics(comm);
   }

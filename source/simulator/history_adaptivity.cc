@@ -232,7 +232,7 @@ namespace amfrac
       SolutionTransfer<dim, dealii::Vector<double>> displacement(
         dof_layer.copy_handler());
       displacement.prepare_for_coarsening_and_refinement(copies);
-      triangulation.execute_coarsening_and_refinement();
+      execute_mesh_change();
       setup_after_refinement();
       interfaces->setup(dof_layer, parameters.boundary_conditions.constants);
       dealii::Vector<double> new_copies(dof_layer.n_copies());

@@ -2,6 +2,7 @@
 // interfaces. The bulk is linear, so its matrix is assembled once (condensed
 // for the Newton increments, and unconstrained for residuals and
 // reactions); each iteration adds only the interface tangent.
+#include <algorithm>
 #include <amfrac/parameters/input_error.h>
 #include <amfrac/simulator/simulator.h>
 #include <cmath>
@@ -590,7 +591,7 @@ namespace amfrac
     if (p.dissipation_control)
       setup_dissipation_control();
     const bool adaptive = parameters.adaptivity.during_history();
-    if (adaptive)
+    if (adaptive && !restart)
       adapt_during_history(0, 0.);
     // Dissipation or opening control, past the switch.
     bool              by_dissipation = false;
@@ -598,6 +599,24 @@ namespace amfrac
     const double      target
       = p.opening_control ? p.opening_increment : p.dissipation_increment;
     double dtau = target;
+    if (restart)
+      {
+        NewtonProgress progress;
+        restore_newton(progress);
+        t                = progress.t;
+        dt               = progress.dt;
+        dtau             = progress.dtau;
+        step             = progress.step;
+        total_iterations = progress.total_iterations;
+        by_dissipation   = progress.by_dissipation;
+        iterations       = progress.iterations;
+      }
+    const auto save = [&](CheckpointData &run, CheckpointData &part) {
+      save_newton(
+        {t, dt, dtau, step, total_iterations, by_dissipation, iterations},
+        run,
+        part);
+    };
     while (t < end * (1 - 1e-12))
       {
         double       trial_t = t;
@@ -670,6 +689,16 @@ namespace amfrac
                         << t << ") is written";
                 if (!report.failure.empty())
                   message << "; the linear solver said: " << report.failure;
+                if (std::any_of(report.residuals.begin(),
+                                report.residuals.end(),
+                                [](const double r) {
+                                  return !std::isfinite(r);
+                                }))
+                  message << "; the residual was not finite (NaN or inf): "
+                             "look for a load or displacement expression "
+                             "that is not defined there (a sqrt or log of a "
+                             "negative number, a division by zero) or "
+                             "material data that overflow";
                 throw CollectiveError(message.str());
               }
             continue;
@@ -709,6 +738,7 @@ namespace amfrac
             dtau = std::min(2 * dtau, target);
             dt   = std::min(2 * dt, nominal);
           }
+        checkpoint_after_step(step, step, true, t >= end * (1 - 1e-12), save);
       }
     if (parameters.buckling.active())
       analyse_newton_buckling(solver, t);

@@ -1,3 +1,4 @@
+#include <amfrac/checkpoint/stop_signals.h>
 #include <amfrac/parameters/expressions.h>
 #include <amfrac/parameters/input_error.h>
 #include <amfrac/postprocess/damage_map.h>
@@ -342,6 +343,21 @@ namespace amfrac
                        "no face has Type = displacement, so the laminate "
                        "can move as a rigid body: prescribe displacements "
                        "on at least one face");
+    // Refinement cycles repeat the whole run per mesh: they neither
+    // checkpoint nor resume (the parameters refuse Every n steps there).
+    const bool resumable = parameters.time.explicit_dynamics || interfaces
+                           || !parameters.adaptivity.active();
+    if (restart && !resumable)
+      throw InputError("Adaptivity/Refinement cycles",
+                       "a run with refinement cycles cannot resume from a "
+                       "checkpoint");
+    if (resumable && !restart && parameters.checkpoint.resume)
+      {
+        const std::string folder
+          = CheckpointStore::newest(parameters.checkpoint.directory);
+        if (!folder.empty())
+          resume(CheckpointStore::read(folder, comm));
+      }
     pcout << "amfrac: " << dim << "D"
           << (dim == 3          ? "" :
               laminate.in_plane ? " in-plane (plane stress)" :
@@ -361,6 +377,12 @@ namespace amfrac
     collect_supports();
     prepare_output_directory();
     clock.restart();
+    std::unique_ptr<StopSignals> signals;
+    if (resumable)
+      {
+        prepare_checkpoints();
+        signals = std::make_unique<StopSignals>();
+      }
     if (parameters.time.explicit_dynamics)
       run_explicit();
     else if (interfaces)
@@ -389,14 +411,18 @@ namespace amfrac
 
     const unsigned int n_steps = parameters.time.n_steps;
     const double       dt      = parameters.time.end_time / n_steps;
-    for (unsigned int step = 1; step <= n_steps; ++step)
+    // Every step is independent of the others: a restart only skips the
+    // steps done.
+    const unsigned int first
+      = restart ? restart->run.get_integer("step") + 1 : 1;
+    for (unsigned int step = first; step <= n_steps; ++step)
       {
         const double t = step * dt;
         {
           TimerOutput::Scope scope(timer, "constraints");
           make_constraints(t, constraints, false);
         }
-        if (step == 1)
+        if (step == first)
           {
             // The condensed matrix depends on which dofs are constrained,
             // not on the prescribed values: assemble and factorize once.
@@ -444,6 +470,8 @@ namespace amfrac
                     residual,
                     {{"strain_energy", energies.strain_energy},
                      {"load_work", energies.load_work}});
+        checkpoint_after_step(
+          step, step, true, step == n_steps, [](auto &, auto &) {});
       }
     if (parameters.buckling.active())
       analyse_buckling(solver, constraints, n_steps * dt);

@@ -6,6 +6,7 @@
 #include <amfrac/parameters/parameters.h>
 #include <amfrac/postprocess/interface_output.h>
 #include <array>
+#include <cstdint>
 #include <deal.II/base/partitioner.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/affine_constraints.h>
@@ -242,6 +243,27 @@ namespace amfrac
     TransferReport
     transfer(const Snapshot &old, const Vector &solution, const MPI_Comm comm);
 
+    /** Checkpoint: per element of this rank, the lower cell (CellId in
+     * binary, 4 numbers), its face and its number of points into @p keys;
+     * per point the packed converged state and the contact status into
+     * @p states; and the two contact-change counters (summed over the
+     * ranks, on rank 0 only, so that any number of ranks can read them
+     * back). */
+    void
+    save(std::vector<std::int64_t> &keys,
+         std::vector<double>       &states,
+         std::vector<std::int64_t> &counters,
+         const MPI_Comm             comm) const;
+
+    /** Restore the states of this rank's elements from the saved ones of
+     * all ranks (save()'s output, concatenated per rank); throws
+     * std::runtime_error if an element or its points are missing. */
+    void
+    load(const std::vector<const std::vector<std::int64_t> *> &keys,
+         const std::vector<const std::vector<double> *>       &states,
+         const std::vector<std::int64_t>                      &counters,
+         const MPI_Comm                                        comm);
+
   private:
     /** The state of one interface point. */
     struct PointState
@@ -261,7 +283,9 @@ namespace amfrac
     {
       /** The level-0 ancestor of the lower cell. */
       types::coarse_cell_id coarse_cell;
-      unsigned int          face; ///< of the lower cell
+      /** The lower cell itself (checkpoints). */
+      CellId       cell;
+      unsigned int face; ///< of the lower cell
       /** The lower cell in the reference coordinates of its coarse
        * (level-0) cell: lower and upper corner. */
       std::pair<Point<dim>, Point<dim>>    box;

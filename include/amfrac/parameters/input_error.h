@@ -33,6 +33,18 @@ namespace amfrac
     using std::runtime_error::runtime_error;
   };
 
+  /**
+   * A run that stopped on purpose with a checkpoint (a signal, or
+   * Checkpoint/Stop after step): every rank throws it together; main()
+   * prints the message (how to resume) and exits with status 75
+   * (EX_TEMPFAIL: try again, i.e. resume).
+   */
+  class RunInterrupted : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
   /** Throw an InputError for @p parameter unless @p condition holds. */
   inline void
   require(const bool         condition,

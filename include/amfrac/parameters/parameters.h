@@ -377,6 +377,34 @@ namespace amfrac
       parse_parameters(ParameterHandler &prm);
     };
 
+    /** `subsection Checkpoint`: when to write the state of a run for a
+     * restart, how many to keep, and whether to resume. */
+    struct Checkpoint
+    {
+      /** Every this many steps (0: never by count); explicit runs count
+       * output steps (rows of history.csv). */
+      unsigned int every_n_steps;
+      /** Every this many minutes of wall time (0: never by time). */
+      double       every_minutes;
+      unsigned int keep;
+      /** Folder of the checkpoints (resolved: never empty). */
+      std::string directory;
+      bool        resume;
+      /** Write a checkpoint after this step and stop (0: never). */
+      unsigned int stop_after_step;
+
+      bool
+      by_count_or_stop() const
+      {
+        return every_n_steps > 0 || stop_after_step > 0;
+      }
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm, const std::string &output);
+    };
+
     /** All parameters of a run. */
     struct Parameters
     {
@@ -392,6 +420,10 @@ namespace amfrac
       Output             output;
       Adaptivity         adaptivity;
       Buckling           buckling;
+      Checkpoint         checkpoint;
+      /** Every parameter with its value (ShortPRM), as read: the text a
+       * checkpoint stores so that a restart can rebuild the run. */
+      std::string text;
 
       static void
       declare_parameters(ParameterHandler &prm);

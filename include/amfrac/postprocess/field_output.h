@@ -75,6 +75,24 @@ namespace amfrac
       cell_fields.clear();
     }
 
+    /** Checkpoint: the VTU series written so far. */
+    const std::vector<std::pair<double, std::string>> &
+    series() const
+    {
+      return pvd_records;
+    }
+
+    /** Checkpoint: the XDMF entries written so far, serialized. */
+    std::string
+    xdmf_state() const;
+
+    /** A restart: continue the series from @p records and @p xdmf
+     * (series() and xdmf_state() of the checkpoint) and rewrite the PVD
+     * and XDMF files with them. Collective. */
+    void
+    restore(const std::vector<std::pair<double, std::string>> &records,
+            const std::string                                 &xdmf);
+
   private:
     std::map<std::string, dealii::Vector<float>> cell_fields;
     const parameters::Output                    &parameters;

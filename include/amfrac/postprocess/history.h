@@ -27,6 +27,25 @@ namespace amfrac
       return values.size();
     }
 
+    const std::vector<std::string> &
+    column_names() const
+    {
+      return columns;
+    }
+
+    const std::vector<std::vector<double>> &
+    rows() const
+    {
+      return values;
+    }
+
+    /** Replace the table by @p column_names and @p rows (a restart) and
+     * rewrite the file atomically with them: rows that a stopped run
+     * wrote after its checkpoint are gone. */
+    void
+    restore(const std::vector<std::string>         &column_names,
+            const std::vector<std::vector<double>> &rows);
+
     /** The value of @p column in row @p row; throws for unknown names. */
     double
     value(const std::size_t row, const std::string &column) const;

@@ -53,6 +53,18 @@ namespace amfrac
           const double                                  time,
           const std::vector<InterfacePointRecord<dim>> &points);
 
+    /** Checkpoint: the series written so far. */
+    const std::vector<std::pair<double, std::string>> &
+    series() const
+    {
+      return pvd_records;
+    }
+
+    /** A restart: continue the series from @p records and rewrite the
+     * PVD file with them. */
+    void
+    restore(const std::vector<std::pair<double, std::string>> &records);
+
   private:
     const parameters::Output                   &parameters;
     const MPI_Comm                              comm;

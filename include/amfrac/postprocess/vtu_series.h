@@ -21,6 +21,21 @@ namespace amfrac
     return flags;
   }
 
+  /** Rank 0 rewrites the PVD series @p pvd_name in @p directory with
+   * @p records (a restart drops the steps after its checkpoint). */
+  inline void
+  rewrite_pvd(const std::string                                 &directory,
+              const std::string                                 &pvd_name,
+              const std::vector<std::pair<double, std::string>> &records,
+              const MPI_Comm                                     comm)
+  {
+    if (dealii::Utilities::MPI::this_mpi_process(comm) != 0 || records.empty())
+      return;
+    write_atomically(directory + "/" + pvd_name, [&](std::ostream &o) {
+      dealii::DataOutBase::write_pvd_record(o, records);
+    });
+  }
+
   /**
    * One step of a VTU time series: every rank writes its piece
    * `<stem>.<rank>.vtu` of @p out into @p directory, then rank 0 writes the

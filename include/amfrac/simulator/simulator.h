@@ -4,6 +4,7 @@
 #include <amfrac/assembly/elastic_assembler.h>
 #include <amfrac/assembly/lever.h>
 #include <amfrac/assembly/loads.h>
+#include <amfrac/checkpoint/checkpoint_store.h>
 #include <amfrac/cohesive/interface_assembler.h>
 #include <amfrac/dofs/tied_copy_dofs.h>
 #include <amfrac/geometry/laminate.h>
@@ -20,6 +21,8 @@
 #include <deal.II/distributed/shared_tria.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/numerics/vector_tools_common.h>
+#include <functional>
+#include <map>
 #include <memory>
 
 namespace amfrac
@@ -61,9 +64,25 @@ namespace amfrac
     set_prescribed_displacements(
       const std::vector<PrescribedDisplacement<dim>> &conditions);
 
-    /** Solve every load step and write the output. */
+    /** Solve every load step and write the output. Throws
+     * RunInterrupted after writing a checkpoint on SIGTERM or SIGINT (or
+     * at Checkpoint/Stop after step). */
     void
     run();
+
+    /** Continue from @p checkpoint (read by CheckpointStore::read()): the
+     * mesh is refined as it was now, run() restores the state and
+     * continues after the checkpoint's step. The checkpoint must come from
+     * a run of the same scene (InputError otherwise). */
+    void
+    resume(const CheckpointStore::Contents &checkpoint);
+
+    /** Wall time [s] spent writing checkpoints so far. */
+    double
+    checkpoint_seconds() const
+    {
+      return seconds_in_checkpoints;
+    }
 
     /** The displacement on the copy layer (locally owned cells). */
     const dealii::Vector<double> &
@@ -227,6 +246,24 @@ namespace amfrac
     double lowest_load_factor = 0;
     Timer  clock;
 
+    /** Checkpoints: the store (nullptr for refinement cycles, which
+     * cannot resume), the checkpoint being resumed from (nullptr on a
+     * fresh start), the wall clock since the last one. */
+    std::unique_ptr<CheckpointStore>           checkpoints;
+    std::unique_ptr<CheckpointStore::Contents> restart;
+    Timer                                      checkpoint_clock;
+    /** Every mesh change of the run: the refine flags (dim bits per active
+     * cell) and the coarsen flags, each as its bit count and 64-bit
+     * words. A restart replays them on the initial mesh, which rebuilds
+     * the mesh cell for cell in the same order, so that the numbering
+     * and every sum are those of the run that went through. */
+    std::vector<std::int64_t> mesh_changes;
+    /** Append the flags set on the mesh to mesh_changes, then execute
+     * them. */
+    void
+           execute_mesh_change();
+    double seconds_in_checkpoints = 0;
+
     std::unique_ptr<NewtonState> newton;
     bool                         solver_ready     = false;
     unsigned int                 n_factorizations = 0;
@@ -238,6 +275,82 @@ namespace amfrac
       /** Why the linear solver failed, if it did. */
       std::string failure;
     };
+
+    /** The state of a path for a checkpoint: rank 0's run file and this
+     * rank's part. */
+    using StateWriter
+      = std::function<void(CheckpointData &run, CheckpointData &part)>;
+    /** After step @p step (a row of history.csv; @p at_row: false inside
+     * an explicit output interval, where only a signal writes), as
+     * checkpoint @p number: write one if Every n steps, Every minutes,
+     * Stop after step, the last step (@p last, with Every n steps) or a
+     * signal asks for it, with the path's state from @p save; then throw
+     * RunInterrupted after a signal or at Stop after step. Collective. */
+    void
+    checkpoint_after_step(const unsigned int  step,
+                          const unsigned long number,
+                          const bool          at_row,
+                          const bool          last,
+                          const StateWriter  &save);
+    /** Mesh, tables, output series and interface history. */
+    void
+    save_common(CheckpointData &run, CheckpointData &part) const;
+    /** Tables, output series and interface history of the checkpoint
+     * being resumed (the mesh was restored by resume()). */
+    void
+    restore_common();
+    /** Replay the mesh changes of the checkpoint on the initial mesh. */
+    void
+    restore_mesh(const CheckpointData &run);
+    /** @p v cell by cell (locally owned cells, local dof order), so that
+     * a restart reads it whatever the numbering or number of ranks. */
+    void
+    save_vector(CheckpointData    &part,
+                const std::string &name,
+                const Vector      &v) const;
+    /** The owned entries of @p v (reinitialized to the owned dofs) from
+     * the checkpoint being resumed. */
+    void
+    restore_vector(const std::string &name, Vector &v) const;
+    /** The counters of the Newton loop that a checkpoint keeps. */
+    struct NewtonProgress
+    {
+      double                    t = 0, dt = 0, dtau = 0;
+      unsigned int              step = 0, total_iterations = 0;
+      bool                      by_dissipation = false;
+      std::vector<unsigned int> iterations;
+    };
+    /** The Newton state (NewtonState's converged quantities) and
+     * @p progress. */
+    void
+    save_newton(const NewtonProgress &progress,
+                CheckpointData       &run,
+                CheckpointData       &part) const;
+    /** Restore what save_newton() wrote, after setup_newton(). */
+    void
+    restore_newton(NewtonProgress &progress);
+    /** The state of an explicit run that a checkpoint keeps: the time
+     * steps done, the scalars of the ledger and the vectors, by name. */
+    struct ExplicitState
+    {
+      unsigned long                   steps = 0;
+      double                          dt = 0, strain_energy = 0;
+      double                          external_work = 0, damping_work = 0;
+      double                          initial_energy = 0;
+      std::map<std::string, Vector *> vectors;
+    };
+    void
+    save_explicit(const ExplicitState &state,
+                  CheckpointData      &run,
+                  CheckpointData      &part) const;
+    /** Restore what save_explicit() wrote; the checkpoint's time step
+     * must be @p state.dt (InputError otherwise). */
+    void
+    restore_explicit(ExplicitState &state);
+    /** Checkpoints of a fresh run: the store, emptied; of a resumed run:
+     * the store and the restored tables. */
+    void
+    prepare_checkpoints();
 
     void
     build_loads_and_supports();

@@ -1,0 +1,636 @@
+#include <amfrac/checkpoint/stop_signals.h>
+#include <amfrac/parameters/input_error.h>
+#include <amfrac/simulator/simulator.h>
+#include <deal.II/base/mpi.h>
+#include <filesystem>
+#include <map>
+#include <sstream>
+
+namespace amfrac
+{
+  namespace
+  {
+    std::string
+    join(const std::vector<std::string> &lines)
+    {
+      std::string text;
+      for (const auto &line : lines)
+        text += line + '\n';
+      return text;
+    }
+
+    std::vector<std::string>
+    split_lines(const std::string &text)
+    {
+      std::vector<std::string> lines;
+      std::istringstream       in(text);
+      for (std::string line; std::getline(in, line);)
+        lines.push_back(line);
+      return lines;
+    }
+
+    void
+    save_table(CheckpointData &run, const std::string &name, const History &h)
+    {
+      run.put_text(name + ".columns", join(h.column_names()));
+      std::vector<double> values;
+      for (const auto &row : h.rows())
+        values.insert(values.end(), row.begin(), row.end());
+      run.put(name + ".values", values);
+    }
+
+    void
+    restore_table(const CheckpointData &run,
+                  const std::string    &name,
+                  History              &h)
+    {
+      const auto columns = split_lines(run.get_text(name + ".columns"));
+      const auto values  = run.get(name + ".values");
+      std::vector<std::vector<double>> rows;
+      if (!columns.empty())
+        for (std::size_t i = 0; i + columns.size() <= values.size();
+             i += columns.size())
+          rows.emplace_back(values.begin() + i,
+                            values.begin() + i + columns.size());
+      h.restore(columns, rows);
+    }
+
+    using Series = std::vector<std::pair<double, std::string>>;
+
+    void
+    save_series(CheckpointData &run, const std::string &name, const Series &s)
+    {
+      std::vector<double>      times;
+      std::vector<std::string> files;
+      for (const auto &[time, file] : s)
+        {
+          times.push_back(time);
+          files.push_back(file);
+        }
+      run.put(name + ".times", times);
+      run.put_text(name + ".files", join(files));
+    }
+
+    Series
+    restore_series(const CheckpointData &run, const std::string &name)
+    {
+      const auto times = run.get(name + ".times");
+      const auto files = split_lines(run.get_text(name + ".files"));
+      if (files.size() != times.size())
+        throw std::runtime_error("the checkpoint's " + name
+                                 + " series is inconsistent");
+      Series series;
+      for (unsigned int i = 0; i < times.size(); ++i)
+        series.emplace_back(times[i], files[i]);
+      return series;
+    }
+
+    /** The CellId of entry @p i of a list of @p stride numbers per cell,
+     * the first 4 CellId::to_binary(). Checked first: deal.II reads the
+     * dimension from the low bits of the second number and divides by
+     * it. */
+    template <int dim>
+    CellId
+    cell_id(const std::vector<std::int64_t> &cells,
+            const std::size_t                i,
+            const unsigned int               stride = 4)
+    {
+      CellId::binary_type binary;
+      for (unsigned int j = 0; j < 4; ++j)
+        binary[j] = cells.at(stride * i + j);
+      if ((binary[1] & 3u) != dim)
+        throw std::runtime_error("a cell id of the checkpoint is not of a "
+                                 + std::to_string(dim) + "D mesh");
+      return CellId(binary);
+    }
+
+    /** Turn any error of reading a checkpoint into an InputError that
+     * names it (and the cause). */
+    template <typename F>
+    void
+    reading(const std::string &folder, const F &action)
+    {
+      try
+        {
+          action();
+        }
+      catch (const InputError &)
+        {
+          throw;
+        }
+      catch (const std::exception &e)
+        {
+          throw InputError("cannot resume from checkpoint '" + folder
+                           + "': " + e.what());
+        }
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::save_vector(CheckpointData    &part,
+                              const std::string &name,
+                              const Vector      &v) const
+  {
+    Vector ghosted(dof_layer.locally_owned_dofs(),
+                   dof_layer.locally_relevant_dofs(),
+                   comm);
+    ghosted = v;
+    std::vector<double>                  values;
+    std::vector<types::global_dof_index> dofs(
+      dof_layer.get_fe().n_dofs_per_cell());
+    for (const auto &cell : dof_layer.copy_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          dof_layer.get_dof_indices(cell, dofs);
+          for (const auto i : dofs)
+            values.push_back(ghosted(i));
+        }
+    part.put("vector." + name, values);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::restore_vector(const std::string &name, Vector &v) const
+  {
+    const IndexSet &owned = dof_layer.locally_owned_dofs();
+    v.reinit(owned, comm);
+    const unsigned int n_local = dof_layer.get_fe().n_dofs_per_cell();
+    // Every saved cell of every part, by id: any number of ranks reads it.
+    std::map<CellId, const double *> saved;
+    for (const auto &part : restart->parts)
+      {
+        const auto &cells  = part.get_integers("cells");
+        const auto &values = part.get("vector." + name);
+        if (values.size() != cells.size() / 4 * n_local)
+          throw InputError("checkpoint '" + restart->folder + "': vector "
+                           + name + " has the wrong size");
+        for (std::size_t c = 0; c < cells.size() / 4; ++c)
+          saved[cell_id<dim>(cells, c)] = values.data() + c * n_local;
+      }
+    std::vector<types::global_dof_index> dofs(n_local);
+    std::vector<bool>                    found(owned.n_elements(), false);
+    for (const auto &cell : dof_layer.copy_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const auto entry = saved.find(cell->id());
+          if (entry == saved.end())
+            throw InputError(
+              "checkpoint '" + restart->folder + "' has no values of cell "
+              + cell->id().to_string() + ": it was written for another mesh");
+          dof_layer.get_dof_indices(cell, dofs);
+          for (unsigned int k = 0; k < n_local; ++k)
+            if (owned.is_element(dofs[k]))
+              {
+                v(dofs[k])                             = entry->second[k];
+                found[owned.index_within_set(dofs[k])] = true;
+              }
+        }
+    v.compress(VectorOperation::insert);
+    if (std::find(found.begin(), found.end(), false) != found.end())
+      throw InputError("checkpoint '" + restart->folder
+                       + "' does not cover every unknown of vector " + name);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::save_common(CheckpointData &run, CheckpointData &part) const
+  {
+    run.put_text("parameters", parameters.text);
+    run.put_integer("ranks", Utilities::MPI::n_mpi_processes(comm));
+    run.put_integer("dimension", dim);
+    run.put_integer("unknowns", dof_layer.n_dofs());
+    run.put_integer("cycle", cycle);
+    run.put_integers("mesh.changes", mesh_changes);
+    run.put_integer("mesh.active_cells", triangulation.n_active_cells());
+    save_table(run, "history", *summary);
+    if (cycle_summary)
+      save_table(run, "adaptivity", *cycle_summary);
+    if (field_output)
+      {
+        save_series(run, "fields", field_output->series());
+        run.put_text("fields.xdmf", field_output->xdmf_state());
+      }
+    if (interface_output)
+      save_series(run, "interface_points", interface_output->series());
+
+    std::vector<std::int64_t> cells;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int k : cell->id().template to_binary<dim>())
+          cells.push_back(k);
+    part.put_integers("cells", cells);
+    if (interfaces)
+      {
+        std::vector<std::int64_t> keys, counters;
+        std::vector<double>       states;
+        interfaces->save(keys, states, counters, comm);
+        part.put_integers("interfaces.keys", keys);
+        part.put("interfaces.states", states);
+        part.put_integers("interfaces.counters", counters);
+      }
+  }
+
+
+
+  namespace
+  {
+    void
+    append_bits(const std::vector<bool> &bits, std::vector<std::int64_t> &out)
+    {
+      out.push_back(bits.size());
+      for (std::size_t i = 0; i < bits.size(); i += 64)
+        {
+          std::uint64_t word = 0;
+          for (std::size_t j = i; j < std::min(i + 64, bits.size()); ++j)
+            word |= std::uint64_t(bits[j]) << (j - i);
+          out.push_back(static_cast<std::int64_t>(word));
+        }
+    }
+
+    std::vector<bool>
+    read_bits(const std::vector<std::int64_t> &in, std::size_t &position)
+    {
+      const std::size_t n = in.at(position++);
+      if (n > 64 * (in.size() - position))
+        throw std::runtime_error("the mesh changes are truncated");
+      std::vector<bool> bits(n);
+      for (std::size_t i = 0; i < n; i += 64, ++position)
+        {
+          const auto word = static_cast<std::uint64_t>(in[position]);
+          for (std::size_t j = i; j < std::min(i + 64, n); ++j)
+            bits[j] = (word >> (j - i)) & 1u;
+        }
+      return bits;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::execute_mesh_change()
+  {
+    std::vector<bool> refine, coarsen;
+    triangulation.save_refine_flags(refine);
+    triangulation.save_coarsen_flags(coarsen);
+    append_bits(refine, mesh_changes);
+    append_bits(coarsen, mesh_changes);
+    triangulation.execute_coarsening_and_refinement();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::restore_mesh(const CheckpointData &run)
+  {
+    if (run.get_integer("dimension") != dim)
+      throw InputError(
+        "the checkpoint is of a " + std::to_string(run.get_integer("dimension"))
+        + "D run, the parameters are of a " + std::to_string(dim) + "D one");
+    const auto &changes  = run.get_integers("mesh.changes");
+    std::size_t position = 0;
+    while (position < changes.size())
+      {
+        const auto refine  = read_bits(changes, position);
+        const auto coarsen = read_bits(changes, position);
+        if (refine.size() != dim * triangulation.n_active_cells()
+            || coarsen.size() != triangulation.n_active_cells())
+          throw InputError("the mesh changes of the checkpoint do not fit "
+                           "the mesh of these parameters: the checkpoint is "
+                           "of another scene");
+        triangulation.load_refine_flags(refine);
+        triangulation.load_coarsen_flags(coarsen);
+        execute_mesh_change();
+      }
+    if (triangulation.n_active_cells()
+        != static_cast<unsigned int>(run.get_integer("mesh.active_cells")))
+      throw InputError("the checkpoint's mesh has "
+                       + std::to_string(run.get_integer("mesh.active_cells"))
+                       + " cells, the mesh of these parameters refined like it "
+                       + std::to_string(triangulation.n_active_cells())
+                       + ": the checkpoint is of another scene");
+    if (changes.empty())
+      return;
+    setup_after_refinement();
+    if (interfaces)
+      interfaces->setup(dof_layer, parameters.boundary_conditions.constants);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::resume(const CheckpointStore::Contents &checkpoint)
+  {
+    restart = std::make_unique<CheckpointStore::Contents>(checkpoint);
+    reading(checkpoint.folder, [&]() {
+      restore_mesh(checkpoint.run);
+      if (checkpoint.run.get_integer("unknowns")
+          != static_cast<std::int64_t>(dof_layer.n_dofs()))
+        throw InputError(
+          "the checkpoint has "
+          + std::to_string(checkpoint.run.get_integer("unknowns"))
+          + " unknowns, these parameters give "
+          + std::to_string(dof_layer.n_dofs())
+          + ": the checkpoint is of another scene");
+    });
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::restore_common()
+  {
+    const CheckpointData &run = restart->run;
+    reading(restart->folder, [&]() {
+      cycle = run.get_integer("cycle");
+      restore_table(run, "history", *summary);
+      if (run.has("adaptivity.columns"))
+        {
+          cycle_summary = std::make_unique<History>(
+            parameters.output.directory + "/adaptivity.csv",
+            Utilities::MPI::this_mpi_process(comm) == 0);
+          restore_table(run, "adaptivity", *cycle_summary);
+        }
+      if (field_output && run.has("fields.times"))
+        field_output->restore(restore_series(run, "fields"),
+                              run.get_text("fields.xdmf"));
+      if (interface_output && run.has("interface_points.times"))
+        interface_output->restore(restore_series(run, "interface_points"));
+      if (interfaces)
+        {
+          std::vector<const std::vector<std::int64_t> *> keys;
+          std::vector<const std::vector<double> *>       states;
+          for (const auto &part : restart->parts)
+            {
+              keys.push_back(&part.get_integers("interfaces.keys"));
+              states.push_back(&part.get("interfaces.states"));
+            }
+          interfaces->load(keys,
+                           states,
+                           restart->parts[0].get_integers(
+                             "interfaces.counters"),
+                           comm);
+        }
+    });
+    pcout << "  resumed from " << restart->folder << " (step "
+          << run.get_integer("step") << ", read in " << restart->read_seconds
+          << " s)" << std::endl;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::prepare_checkpoints()
+  {
+    const auto &p = parameters.checkpoint;
+    checkpoints = std::make_unique<CheckpointStore>(p.directory, p.keep, comm);
+    if (!restart && p.resume)
+      {
+        const std::string folder = CheckpointStore::newest(p.directory);
+        if (folder.empty())
+          pcout << "  no checkpoint in " << p.directory
+                << ": starting from the beginning" << std::endl;
+        else
+          resume(CheckpointStore::read(folder, comm));
+      }
+    if (restart)
+      restore_common();
+    else
+      checkpoints->clear();
+    checkpoint_clock.restart();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::checkpoint_after_step(const unsigned int  step,
+                                        const unsigned long number,
+                                        const bool          at_row,
+                                        const bool          last,
+                                        const StateWriter  &save)
+  {
+    if (!checkpoints)
+      return;
+    const auto  &p       = parameters.checkpoint;
+    const bool   root    = Utilities::MPI::this_mpi_process(comm) == 0;
+    const double minutes = checkpoint_clock.wall_time() / 60;
+    // Rank 0's clock decides, so that all ranks agree.
+    const unsigned int local[2]
+      = {static_cast<unsigned int>(StopSignals::received()),
+         root && p.every_minutes > 0 && minutes >= p.every_minutes ? 1u : 0u};
+    unsigned int global[2];
+    Utilities::MPI::max(ArrayView<const unsigned int>(local, 2),
+                        comm,
+                        ArrayView<unsigned int>(global, 2));
+    const int  signal = global[0];
+    const bool stop
+      = at_row && p.stop_after_step > 0 && step == p.stop_after_step;
+    const bool due = signal != 0 || stop
+                     || (at_row
+                         && (global[1] != 0
+                             || (p.every_n_steps > 0
+                                 && (step % p.every_n_steps == 0 || last))));
+    if (!due)
+      return;
+    std::string folder;
+    {
+      TimerOutput::Scope scope(timer, "checkpoint");
+      Timer              watch;
+      CheckpointData     run, part;
+      run.put_integer("step", step);
+      save_common(run, part);
+      save(run, part);
+      folder             = checkpoints->write(number, run, part);
+      const double bytes = Utilities::MPI::sum(
+        double(part.payload_bytes() + (root ? run.payload_bytes() : 0)), comm);
+      seconds_in_checkpoints += watch.wall_time();
+      pcout << "  checkpoint " << folder << ": " << bytes / 1e6 << " MB in "
+            << watch.wall_time() << " s" << std::endl;
+    }
+    checkpoint_clock.restart();
+    const std::string resume_with
+      = "; continue with: amfrac --resume " + p.directory;
+    if (signal != 0)
+      throw RunInterrupted(
+        std::string("stopped by ") + StopSignals::name(signal) + " after step "
+        + std::to_string(step) + ", state written to " + folder + resume_with);
+    if (stop)
+      throw RunInterrupted("stopped after step " + std::to_string(step)
+                           + " (Checkpoint/Stop after step), state written "
+                             "to "
+                           + folder + resume_with);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::save_newton(const NewtonProgress &progress,
+                              CheckpointData       &run,
+                              CheckpointData       &part) const
+  {
+    run.put("newton.t", progress.t);
+    run.put("newton.dt", progress.dt);
+    run.put("newton.dtau", progress.dtau);
+    run.put_integer("newton.step", progress.step);
+    run.put_integer("newton.total_iterations", progress.total_iterations);
+    run.put_integer("newton.by_dissipation", progress.by_dissipation);
+    run.put_integers("newton.iterations",
+                     std::vector<std::int64_t>(progress.iterations.begin(),
+                                               progress.iterations.end()));
+    run.put_integer("newton.factorizations", n_factorizations);
+    run.put("newton.force_scale", newton->force_scale);
+    run.put("newton.external_work", newton->external_work);
+    run.put("newton.converged_force", newton->converged_force);
+    save_vector(part, "displacement", newton->converged_solution);
+    save_vector(part, "previous_residual", newton->previous_residual);
+    save_vector(part, "previous_load", newton->previous_load);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::restore_newton(NewtonProgress &progress)
+  {
+    const CheckpointData &run = restart->run;
+    reading(restart->folder, [&]() {
+      progress.t                = run.get_scalar("newton.t");
+      progress.dt               = run.get_scalar("newton.dt");
+      progress.dtau             = run.get_scalar("newton.dtau");
+      progress.step             = run.get_integer("newton.step");
+      progress.total_iterations = run.get_integer("newton.total_iterations");
+      progress.by_dissipation   = run.get_integer("newton.by_dissipation");
+      const auto &its           = run.get_integers("newton.iterations");
+      progress.iterations.assign(its.begin(), its.end());
+      n_factorizations        = run.get_integer("newton.factorizations");
+      newton->force_scale     = run.get_scalar("newton.force_scale");
+      newton->external_work   = run.get_scalar("newton.external_work");
+      newton->converged_force = run.get_scalar("newton.converged_force");
+      restore_vector("displacement", newton->converged_solution);
+      restore_vector("previous_residual", newton->previous_residual);
+      restore_vector("previous_load", newton->previous_load);
+    });
+    solution              = newton->converged_solution;
+    relevant_solution     = solution;
+    newton->residual      = newton->previous_residual;
+    newton->external_load = newton->previous_load;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::save_explicit(const ExplicitState &state,
+                                CheckpointData      &run,
+                                CheckpointData      &part) const
+  {
+    run.put_integer("explicit.steps", state.steps);
+    run.put("explicit.dt", state.dt);
+    run.put("explicit.strain_energy", state.strain_energy);
+    run.put("explicit.external_work", state.external_work);
+    run.put("explicit.damping_work", state.damping_work);
+    run.put("explicit.initial_energy", state.initial_energy);
+    for (const auto &[name, v] : state.vectors)
+      save_vector(part, name, *v);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::restore_explicit(ExplicitState &state)
+  {
+    const CheckpointData &run = restart->run;
+    reading(restart->folder, [&]() {
+      const double dt = run.get_scalar("explicit.dt");
+      if (dt != state.dt)
+        throw InputError("the checkpoint's time step is " + std::to_string(dt)
+                         + " s, these parameters give "
+                         + std::to_string(state.dt)
+                         + " s: the Time subsection changed");
+      state.steps          = run.get_integer("explicit.steps");
+      state.strain_energy  = run.get_scalar("explicit.strain_energy");
+      state.external_work  = run.get_scalar("explicit.external_work");
+      state.damping_work   = run.get_scalar("explicit.damping_work");
+      state.initial_energy = run.get_scalar("explicit.initial_energy");
+      for (const auto &[name, v] : state.vectors)
+        restore_vector(name, *v);
+    });
+  }
+
+
+
+  template void
+  Simulator<2>::resume(const CheckpointStore::Contents &);
+  template void
+  Simulator<3>::resume(const CheckpointStore::Contents &);
+  template void
+  Simulator<2>::save_vector(CheckpointData &,
+                            const std::string &,
+                            const Vector &) const;
+  template void
+  Simulator<3>::save_vector(CheckpointData &,
+                            const std::string &,
+                            const Vector &) const;
+  template void
+  Simulator<2>::restore_vector(const std::string &, Vector &) const;
+  template void
+  Simulator<3>::restore_vector(const std::string &, Vector &) const;
+  template void
+  Simulator<2>::prepare_checkpoints();
+  template void
+  Simulator<2>::execute_mesh_change();
+  template void
+  Simulator<2>::save_newton(const NewtonProgress &,
+                            CheckpointData &,
+                            CheckpointData &) const;
+  template void
+  Simulator<2>::restore_newton(NewtonProgress &);
+  template void
+  Simulator<2>::save_explicit(const ExplicitState &,
+                              CheckpointData &,
+                              CheckpointData &) const;
+  template void
+  Simulator<2>::restore_explicit(ExplicitState &);
+  template void
+  Simulator<3>::prepare_checkpoints();
+  template void
+  Simulator<3>::execute_mesh_change();
+  template void
+  Simulator<3>::save_newton(const NewtonProgress &,
+                            CheckpointData &,
+                            CheckpointData &) const;
+  template void
+  Simulator<3>::restore_newton(NewtonProgress &);
+  template void
+  Simulator<3>::save_explicit(const ExplicitState &,
+                              CheckpointData &,
+                              CheckpointData &) const;
+  template void
+  Simulator<3>::restore_explicit(ExplicitState &);
+  template void
+  Simulator<2>::checkpoint_after_step(const unsigned int,
+                                      const unsigned long,
+                                      const bool,
+                                      const bool,
+                                      const StateWriter &);
+  template void
+  Simulator<3>::checkpoint_after_step(const unsigned int,
+                                      const unsigned long,
+                                      const bool,
+                                      const bool,
+                                      const StateWriter &);
+} // namespace amfrac
