@@ -1,5 +1,7 @@
+#include <algorithm>
 #include <amfrac/assembly/elastic_assembler.h>
 #include <amfrac/parameters/input_error.h>
+#include <cmath>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
@@ -7,6 +9,7 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 #include <limits>
+#include <sstream>
 
 namespace amfrac
 {
@@ -207,15 +210,38 @@ namespace amfrac
     Scratch scratch(dofs.get_mapping(), dofs.get_fe(), quadrature_degree);
     dealii::Vector<double>               cell_f(n);
     std::vector<types::global_dof_index> indices(n);
+    // A load expression that is not defined at t (a sqrt of a negative
+    // number) must stop the run with its name, on every rank together.
+    bool       finite = true;
+    Point<dim> where;
     for (const auto &cell : cells)
       {
         if (loads.body_force)
           scratch.fe_values.reinit(cell);
         dofs.get_dof_indices(cell, indices);
         cell_load(scratch, cell, loads, t, cell_f);
-        f.add(indices, cell_f);
+        if (std::all_of(cell_f.begin(), cell_f.end(), [](const double v) {
+              return std::isfinite(v);
+            }))
+          f.add(indices, cell_f);
+        else if (finite)
+          finite = false, where = cell->center();
       }
     f.compress(VectorOperation::add);
+    const MPI_Comm comm
+      = dofs.copy_handler().get_triangulation().get_communicator();
+    if (Utilities::MPI::min(finite ? 1 : 0, comm) == 0)
+      {
+        std::ostringstream message;
+        message << "a load (Boundary conditions: Patch load, Traction, "
+                   "Pressure or Body force) is not finite (NaN or inf) at t="
+                << t;
+        if (!finite)
+          message << " near (" << where << ")";
+        message << ": look for an expression that is not defined there (a "
+                   "sqrt or log of a negative number, a division by zero)";
+        throw NonFiniteValue(message.str());
+      }
   }
 
 

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <amfrac/checkpoint/stop_signals.h>
 #include <amfrac/parameters/input_error.h>
 #include <amfrac/simulator/simulator.h>
@@ -174,6 +175,10 @@ namespace amfrac
       }
     std::vector<types::global_dof_index> dofs(n_local);
     std::vector<bool>                    found(owned.n_elements(), false);
+    // The owned entries directly (in the order of the owned index set):
+    // no compress(), whose bookkeeping would then expect an insertion
+    // from the next user of the vector.
+    double *const values = v.begin();
     for (const auto &cell : dof_layer.copy_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -186,11 +191,11 @@ namespace amfrac
           for (unsigned int k = 0; k < n_local; ++k)
             if (owned.is_element(dofs[k]))
               {
-                v(dofs[k])                             = entry->second[k];
-                found[owned.index_within_set(dofs[k])] = true;
+                const auto local = owned.index_within_set(dofs[k]);
+                values[local]    = entry->second[k];
+                found[local]     = true;
               }
         }
-    v.compress(VectorOperation::insert);
     if (std::find(found.begin(), found.end(), false) != found.end())
       throw InputError("checkpoint '" + restart->folder
                        + "' does not cover every unknown of vector " + name);
@@ -523,10 +528,16 @@ namespace amfrac
       restore_vector("previous_residual", newton->previous_residual);
       restore_vector("previous_load", newton->previous_load);
     });
-    solution              = newton->converged_solution;
-    relevant_solution     = solution;
-    newton->residual      = newton->previous_residual;
-    newton->external_load = newton->previous_load;
+    solution          = newton->converged_solution;
+    relevant_solution = solution;
+    // Entry by entry: an assignment would carry the restored vectors'
+    // insert state into the next assembly's compress(add).
+    std::copy(newton->previous_residual.begin(),
+              newton->previous_residual.end(),
+              newton->residual.begin());
+    std::copy(newton->previous_load.begin(),
+              newton->previous_load.end(),
+              newton->external_load.begin());
   }
 
 

@@ -221,15 +221,24 @@ namespace amfrac
   void
   Simulator<dim>::impose_prescribed(const double t, Vector &u) const
   {
+    std::string not_finite;
     for (unsigned int k = 0; k < prescribed.size(); ++k)
       {
         prescribed[k].value->set_time(t);
         for (const auto i : supports[k])
           if (dof_layer.locally_owned_dofs().is_element(i))
-            u(i) = prescribed[k].value->value(dof_layer.support_point(i),
-                                              dof_layer.component(i));
+            {
+              const double value
+                = prescribed[k].value->value(dof_layer.support_point(i),
+                                             dof_layer.component(i));
+              if (std::isfinite(value))
+                u(i) = value;
+              else if (not_finite.empty())
+                not_finite = prescribed_not_finite(k, i, t);
+            }
       }
     u.compress(VectorOperation::insert);
+    check_finite(not_finite);
   }
 
 
@@ -457,9 +466,19 @@ namespace amfrac
     };
     Vector old_solution(owned, comm);
     // The state of the last output step: written if the run diverges.
-    Vector              last_good(solution);
-    unsigned int        last_good_step = n / substeps;
-    double              last_good_t    = n * dt;
+    Vector       last_good(solution);
+    unsigned int last_good_step = n / substeps;
+    double       last_good_t    = n * dt;
+    // Write the fields of the last output step and stop with @p what.
+    const auto stop_with_last_good = [&](const std::string &what) {
+      relevant_solution = last_good;
+      write_fields(last_good_step, last_good_t);
+      std::ostringstream message;
+      message << what
+              << "; the fields of the last output step (t=" << last_good_t
+              << " s) are written";
+      throw CollectiveError(message.str());
+    };
     const unsigned long n_total = static_cast<unsigned long>(substeps) * n_out;
     while (n < n_total)
       {
@@ -474,9 +493,16 @@ namespace amfrac
           solution.add(dt, velocity);
           ++n;
           t = n * dt;
-          impose_prescribed(t, solution);
-          update_damping();
-          evaluate(t);
+          try
+            {
+              impose_prescribed(t, solution);
+              update_damping();
+              evaluate(t);
+            }
+          catch (const NonFiniteValue &e)
+            {
+              stop_with_last_good(e.what());
+            }
           velocity.add(0.5 * dt, acceleration);
           displacement_step = solution;
           displacement_step -= old_solution;
@@ -491,8 +517,8 @@ namespace amfrac
               damping_work += 0.5 * (previous_damping * displacement_step);
             }
           // A step above the critical one shows as strain energy
-          // growing beyond all the energy the run was given; a NaN in a
-          // load or in the response as a non-finite energy.
+          // growing beyond all the energy the run was given; a NaN in the
+          // response as a non-finite energy.
           if (!std::isfinite(strain_energy)
               || strain_energy
                    > 10 * (std::abs(external_work) + initial_energy + 1e-300))
@@ -503,15 +529,11 @@ namespace amfrac
                    << external_work << " N mm of external work and "
                    << initial_energy
                    << " N mm at the start): reduce Time/Safety factor or "
-                      "Time/Time step, or look for a load that is not "
-                      "finite; the fields of the last output step (t="
-                   << last_good_t << " s) are written";
-              relevant_solution = last_good;
-              write_fields(last_good_step, last_good_t);
-              throw CollectiveError(what.str());
+                      "Time/Time step";
+              stop_with_last_good(what.str());
             }
         }
-        // A signal stops the run after any time step; the rest of the
+        // A signal stops the run after a time step; the rest of the
         // checkpoints fall on output steps.
         const bool at_row = n % substeps == 0;
         if (at_row)
@@ -522,7 +544,10 @@ namespace amfrac
             last_good_step = out;
             last_good_t    = t;
           }
-        checkpoint_after_step(out, n, at_row, n == n_total, save);
+        // Between rows a signal is looked for every 10 steps: the check
+        // is a reduction over the ranks.
+        if (at_row || n % 10 == 0)
+          checkpoint_after_step(out, n, at_row, n == n_total, save);
       }
     timer.print_wall_time_statistics(comm);
   }

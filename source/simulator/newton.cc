@@ -299,7 +299,7 @@ namespace amfrac
       }
     catch (const CollectiveError &e)
       {
-        report.failure = e.what();
+        report.failure = std::string("the linear solver said: ") + e.what();
         return false;
       }
     return true;
@@ -430,14 +430,21 @@ namespace amfrac
   {
     NewtonState                       &n = *newton;
     const parameters::NonlinearSolver &p = parameters.nonlinear_solver;
-    {
-      TimerOutput::Scope scope(timer, "constraints");
-      make_constraints(t, constraints, false);
-      assembler.assemble_load(loads, t, n.external_load);
-      solution = n.converged_solution;
-      constraints.distribute(solution);
-    }
-    NewtonReport report;
+    NewtonReport                       report;
+    try
+      {
+        TimerOutput::Scope scope(timer, "constraints");
+        make_constraints(t, constraints, false);
+        assembler.assemble_load(loads, t, n.external_load);
+        solution = n.converged_solution;
+        constraints.distribute(solution);
+      }
+    catch (const NonFiniteValue &e)
+      {
+        // A shorter step may stay where the expression is defined.
+        report.failure = e.what();
+        return report;
+      }
     // Predictor: the converged state's tangent applied to the new
     // prescribed values, R(u_old) + K_T(u_old) (u_jump - u_old). Starting
     // from u_jump itself would put the whole step's displacement jump into
@@ -465,7 +472,8 @@ namespace amfrac
           }
         catch (const CollectiveError &e)
           {
-            report.failure = e.what(); // e.g. a singular tangent: cut back
+            // E.g. a singular tangent: cut back.
+            report.failure = std::string("the linear solver said: ") + e.what();
             return report;
           }
         n.increment_constraints.distribute(n.increment);
@@ -688,7 +696,7 @@ namespace amfrac
                            "last converged state (t="
                         << t << ") is written";
                 if (!report.failure.empty())
-                  message << "; the linear solver said: " << report.failure;
+                  message << "; " << report.failure;
                 if (std::any_of(report.residuals.begin(),
                                 report.residuals.end(),
                                 [](const double r) {

@@ -3,6 +3,7 @@
 #include <amfrac/parameters/input_error.h>
 #include <amfrac/postprocess/damage_map.h>
 #include <amfrac/simulator/simulator.h>
+#include <cmath>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/mapping_q1.h>
@@ -228,6 +229,39 @@ namespace amfrac
 
 
   template <int dim>
+  std::string
+  Simulator<dim>::prescribed_not_finite(const unsigned int            k,
+                                        const types::global_dof_index dof,
+                                        const double                  t) const
+  {
+    std::ostringstream message;
+    message << "the prescribed displacement of Boundary conditions/"
+            << prescribed[k].name << " is not finite (NaN or inf) at t=" << t
+            << " at (" << dof_layer.support_point(dof)
+            << "): look for an expression that is not defined there (a sqrt "
+               "or log of a negative number, a division by zero)";
+    return message.str();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::check_finite(const std::string &not_finite) const
+  {
+    // Collective: the first rank that saw a non-finite value says which
+    // (one integer reduction when all is well).
+    if (Utilities::MPI::max(not_finite.empty() ? 0 : 1, comm) == 0)
+      return;
+    const auto messages = Utilities::MPI::all_gather(comm, not_finite);
+    for (const auto &message : messages)
+      if (!message.empty())
+        throw NonFiniteValue(message);
+  }
+
+
+
+  template <int dim>
   void
   Simulator<dim>::make_constraints(const double               t,
                                    AffineConstraints<double> &constraints,
@@ -243,6 +277,7 @@ namespace amfrac
           constraints.add_line(line.index);
           constraints.add_entries(line.index, line.entries);
         }
+    std::string not_finite;
     for (unsigned int k = 0; k < prescribed.size(); ++k)
       {
         prescribed[k].value->set_time(t);
@@ -251,13 +286,18 @@ namespace amfrac
               && !constraints.is_constrained(dof))
             {
               constraints.add_line(dof);
-              if (!homogeneous)
-                constraints.set_inhomogeneity(
-                  dof,
-                  prescribed[k].value->value(dof_layer.support_point(dof),
-                                             dof_layer.component(dof)));
+              if (homogeneous)
+                continue;
+              const double value
+                = prescribed[k].value->value(dof_layer.support_point(dof),
+                                             dof_layer.component(dof));
+              if (std::isfinite(value))
+                constraints.set_inhomogeneity(dof, value);
+              else if (not_finite.empty())
+                not_finite = prescribed_not_finite(k, dof, t);
             }
       }
+    check_finite(not_finite);
     lever.add_constraints(t,
                           homogeneous,
                           dof_layer.locally_relevant_dofs(),

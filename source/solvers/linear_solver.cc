@@ -7,6 +7,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_gmres.h>
+#include <exception>
 #include <ml_MultiLevelPreconditioner.h>
 #include <sstream>
 
@@ -18,7 +19,19 @@ namespace amfrac
 
 
 
-  LinearSolver::~LinearSolver() = default;
+  LinearSolver::~LinearSolver()
+  {
+    // MUMPS (and ML) free their communicators collectively. When an error
+    // on this rank alone unwinds the stack, the other ranks wait elsewhere
+    // and would never join: leave the solver objects to the process's end
+    // (main() aborts the job) instead of hanging in their destructors.
+    if (std::uncaught_exceptions() > 0)
+      {
+        direct.release();
+        direct_problem.release();
+        amg.release();
+      }
+  }
 
 
 

@@ -34,6 +34,17 @@ namespace amfrac
   };
 
   /**
+   * A load or prescribed displacement that evaluates to NaN or infinity
+   * (a sqrt or log of a negative number in an expression): raised on every
+   * rank together, so that the run can write its last good state.
+   */
+  class NonFiniteValue : public CollectiveError
+  {
+  public:
+    using CollectiveError::CollectiveError;
+  };
+
+  /**
    * A run that stopped on purpose with a checkpoint (a signal, or
    * Checkpoint/Stop after step): every rank throws it together; main()
    * prints the message (how to resume) and exits with status 75

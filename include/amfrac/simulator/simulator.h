@@ -473,6 +473,16 @@ namespace amfrac
     /** The explicit step from the estimate and the Time parameters. */
     double
     choose_time_step(const double stable) const;
+    /** The message for a prescribed value (condition @p k, @p dof) that
+     * is not finite at @p t. */
+    std::string
+    prescribed_not_finite(const unsigned int            k,
+                          const types::global_dof_index dof,
+                          const double                  t) const;
+    /** Throw NonFiniteValue on every rank if any rank has a @p not_finite
+     * message (collective). */
+    void
+    check_finite(const std::string &not_finite) const;
     /** The prescribed displacements at @p t into the supported dofs. */
     void
     impose_prescribed(const double t, Vector &u) const;
