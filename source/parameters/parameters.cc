@@ -145,8 +145,15 @@ namespace amfrac
       region_refinements    = prm.get_integer("Region refinements");
       prm.leave_subsection();
 
-      require(length > 0, "Geometry/Length", "must be positive");
-      require(width > 0, "Geometry/Width", "must be positive");
+      // Lengths are in mm: a value beyond a kilometre is a units mistake
+      // (or overflows the element geometry: found by the fuzzer).
+      const double largest = 1e6;
+      const auto   in_range
+        = [&](const double value) { return value > 0 && value <= largest; };
+      const std::string range = "must be positive and at most 1e6 mm (1 km): "
+                                "lengths are in mm";
+      require(in_range(length), "Geometry/Length", range);
+      require(in_range(width), "Geometry/Width", range);
       require(hole_radius < 0.45 * std::min(length, width),
               "Geometry/Hole radius",
               "must be below 0.45 times the smaller of Length and Width");
@@ -170,7 +177,10 @@ namespace amfrac
       if (ply_thickness.size() == 1)
         ply_thickness.assign(plies.size(), ply_thickness[0]);
       for (const double t : ply_thickness)
-        require(t > 0, "Geometry/Ply thickness", "must be positive");
+        require(in_range(t),
+                total_thickness > 0 ? "Geometry/Total thickness" :
+                                      "Geometry/Ply thickness",
+                range);
     }
 
 

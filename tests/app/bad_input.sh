@@ -306,6 +306,20 @@ expect density_in_kg_per_m3 "Materials/Density" "$base
 subsection Materials
   set Density = 1600
 end"
+# The fuzzer's Length = 1e300 overflowed the mapping (a deal.II assertion
+# in the debug build, a "singular matrix" in release).
+expect length_beyond_a_kilometre "Geometry/Length" "$(with 'set Elements along length = 2' 'set Length = 1e300')"
+expect checkpoint_nan_minutes "entry named Every minutes" "$base
+subsection Checkpoint
+  set Every minutes = nan
+end"
+expect checkpoint_with_cycles "Checkpoint/Every n steps" "$base
+subsection Adaptivity
+  set Refinement cycles = 2
+end
+subsection Checkpoint
+  set Every n steps = 1
+end"
 # Linear buckling: only of a static state with out-of-plane freedom.
 buckling='
 subsection Buckling
