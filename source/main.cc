@@ -74,7 +74,7 @@ namespace
   amfrac::CheckpointStore::Contents
   read_checkpoint(const std::string &directory, const MPI_Comm comm)
   {
-    const std::string folder = amfrac::CheckpointStore::newest(directory);
+    const std::string folder = amfrac::CheckpointStore::newest(directory, comm);
     if (folder.empty())
       throw amfrac::InputError("--resume: no complete checkpoint in '"
                                + directory

@@ -230,18 +230,23 @@ namespace amfrac
     f.compress(VectorOperation::add);
     const MPI_Comm comm
       = dofs.copy_handler().get_triangulation().get_communicator();
-    if (Utilities::MPI::min(finite ? 1 : 0, comm) == 0)
+    if (Utilities::MPI::max(finite ? 0 : 1, comm) == 0)
+      return;
+    std::string mine;
+    if (!finite)
       {
         std::ostringstream message;
         message << "a load (Boundary conditions: Patch load, Traction, "
                    "Pressure or Body force) is not finite (NaN or inf) at t="
-                << t;
-        if (!finite)
-          message << " near (" << where << ")";
-        message << ": look for an expression that is not defined there (a "
+                << t << " near (" << where
+                << "): look for an expression that is not defined there (a "
                    "sqrt or log of a negative number, a division by zero)";
-        throw NonFiniteValue(message.str());
+        mine = message.str();
       }
+    // Every rank throws the first rank's message (rank 0 prints it).
+    for (const auto &message : Utilities::MPI::all_gather(comm, mine))
+      if (!message.empty())
+        throw NonFiniteValue(message);
   }
 
 

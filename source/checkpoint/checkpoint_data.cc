@@ -33,7 +33,17 @@ namespace amfrac
       }
       ~Handle()
       {
-        close(id);
+        if (open)
+          close(id);
+      }
+      /** Close now and report failure (a file's last data is written
+       * here). */
+      void
+      close_or_throw(const std::string &what)
+      {
+        open = false;
+        if (close(id) < 0)
+          throw std::runtime_error(what);
       }
       Handle(const Handle &) = delete;
       Handle &
@@ -47,6 +57,7 @@ namespace amfrac
     private:
       const hid_t id;
       herr_t (*close)(hid_t);
+      bool open = true;
     };
 
     void
@@ -261,7 +272,8 @@ namespace amfrac
     Handle file(
       H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
       H5Fclose,
-      "cannot create '" + path + "'");
+      "cannot create '" + path
+        + "' (does the folder exist and is it writable?)");
     write_group(file, "real", reals, path, [&](hid_t g, auto &n, auto &v) {
       write_array(g, n, H5T_NATIVE_DOUBLE, v.data(), v.size(), path);
     });
@@ -279,6 +291,8 @@ namespace amfrac
     write_array(
       file, "version", H5T_NATIVE_INT64, version.data(), version.size(), path);
     check(H5Fflush(file, H5F_SCOPE_GLOBAL), "cannot flush '" + path + "'");
+    file.close_or_throw("cannot close '" + path
+                        + "' (is the disk full or the folder gone?)");
   }
 
 

@@ -171,6 +171,37 @@ namespace amfrac
 
 
 
+  std::string
+  CheckpointStore::newest(const std::string &directory, const MPI_Comm comm)
+  {
+    std::string folder;
+    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+      folder = newest(directory);
+    return dealii::Utilities::MPI::broadcast(comm, folder, 0);
+  }
+
+
+
+  unsigned int
+  CheckpointStore::remove_after(const unsigned long number) const
+  {
+    unsigned int removed = 0;
+    collectively<CollectiveError>(comm, [&]() {
+      if (dealii::Utilities::MPI::this_mpi_process(comm) != 0
+          || !fs::exists(directory))
+        return;
+      for (const unsigned long n : numbers(directory))
+        if (n > number)
+          {
+            remove_or_throw(fs::path(directory) / folder_name(n));
+            ++removed;
+          }
+    });
+    return dealii::Utilities::MPI::broadcast(comm, removed, 0);
+  }
+
+
+
   CheckpointStore::Contents
   CheckpointStore::read(const std::string &folder, const MPI_Comm comm)
   {

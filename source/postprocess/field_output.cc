@@ -203,12 +203,6 @@ namespace amfrac
   {
     const MPI_Comm comm
       = dofs.copy_handler().get_triangulation().get_communicator();
-    pvd_records = records;
-    if (parameters.write_vtu)
-      rewrite_pvd(parameters.directory,
-                  parameters.base_name + ".pvd",
-                  records,
-                  comm);
     xdmf_entries.clear();
     if (!xdmf.empty())
       {
@@ -224,6 +218,13 @@ namespace amfrac
         if (Utilities::MPI::this_mpi_process(comm) == 0)
           rename_or_throw(name + ".tmp", name);
       }
+    // Rank 0 alone, after the collective XDMF record.
+    pvd_records = records;
+    if (parameters.write_vtu)
+      rewrite_pvd(parameters.directory,
+                  parameters.base_name + ".pvd",
+                  records,
+                  comm);
   }
 
 

@@ -106,24 +106,30 @@ namespace amfrac
     }
 
     /** Turn any error of reading a checkpoint into an InputError that
-     * names it (and the cause). */
+     * names it (and the cause), on every rank: the first failing rank's
+     * message. @p action must not call collectives after a point where it
+     * may throw on one rank only. */
     template <typename F>
     void
-    reading(const std::string &folder, const F &action)
+    reading(const std::string &folder, const MPI_Comm comm, const F &action)
     {
+      std::string failure;
       try
         {
           action();
         }
-      catch (const InputError &)
-        {
-          throw;
-        }
       catch (const std::exception &e)
         {
-          throw InputError("cannot resume from checkpoint '" + folder
-                           + "': " + e.what());
+          failure = e.what();
+          if (failure.rfind("cannot resume", 0) != 0)
+            failure
+              = "cannot resume from checkpoint '" + folder + "': " + failure;
         }
+      if (Utilities::MPI::max(failure.empty() ? 0 : 1, comm) == 0)
+        return;
+      for (const auto &message : Utilities::MPI::all_gather(comm, failure))
+        if (!message.empty())
+          throw InputError(message);
     }
   } // namespace
 
@@ -336,7 +342,7 @@ namespace amfrac
   Simulator<dim>::resume(const CheckpointStore::Contents &checkpoint)
   {
     restart = std::make_unique<CheckpointStore::Contents>(checkpoint);
-    reading(checkpoint.folder, [&]() {
+    reading(checkpoint.folder, comm, [&]() {
       restore_mesh(checkpoint.run);
       if (checkpoint.run.get_integer("unknowns")
           != static_cast<std::int64_t>(dof_layer.n_dofs()))
@@ -356,8 +362,31 @@ namespace amfrac
   Simulator<dim>::restore_common()
   {
     const CheckpointData &run = restart->run;
-    reading(restart->folder, [&]() {
+    // The state first (no collective calls: a failure on one rank is
+    // gathered by reading()), then the output files, which rank 0 writes
+    // after the collective XDMF record.
+    reading(restart->folder, comm, [&]() {
       cycle = run.get_integer("cycle");
+      if (!interfaces)
+        return;
+      std::vector<const std::vector<std::int64_t> *> keys;
+      std::vector<const std::vector<double> *>       states;
+      for (const auto &part : restart->parts)
+        {
+          keys.push_back(&part.get_integers("interfaces.keys"));
+          states.push_back(&part.get("interfaces.states"));
+        }
+      interfaces->load(keys,
+                       states,
+                       restart->parts[0].get_integers("interfaces.counters"),
+                       comm);
+    });
+    reading(restart->folder, comm, [&]() {
+      if (field_output && run.has("fields.times"))
+        field_output->restore(restore_series(run, "fields"),
+                              run.get_text("fields.xdmf"));
+      if (interface_output && run.has("interface_points.times"))
+        interface_output->restore(restore_series(run, "interface_points"));
       restore_table(run, "history", *summary);
       if (run.has("adaptivity.columns"))
         {
@@ -365,26 +394,6 @@ namespace amfrac
             parameters.output.directory + "/adaptivity.csv",
             Utilities::MPI::this_mpi_process(comm) == 0);
           restore_table(run, "adaptivity", *cycle_summary);
-        }
-      if (field_output && run.has("fields.times"))
-        field_output->restore(restore_series(run, "fields"),
-                              run.get_text("fields.xdmf"));
-      if (interface_output && run.has("interface_points.times"))
-        interface_output->restore(restore_series(run, "interface_points"));
-      if (interfaces)
-        {
-          std::vector<const std::vector<std::int64_t> *> keys;
-          std::vector<const std::vector<double> *>       states;
-          for (const auto &part : restart->parts)
-            {
-              keys.push_back(&part.get_integers("interfaces.keys"));
-              states.push_back(&part.get("interfaces.states"));
-            }
-          interfaces->load(keys,
-                           states,
-                           restart->parts[0].get_integers(
-                             "interfaces.counters"),
-                           comm);
         }
     });
     pcout << "  resumed from " << restart->folder << " (step "
@@ -402,7 +411,7 @@ namespace amfrac
     checkpoints = std::make_unique<CheckpointStore>(p.directory, p.keep, comm);
     if (!restart && p.resume)
       {
-        const std::string folder = CheckpointStore::newest(p.directory);
+        const std::string folder = CheckpointStore::newest(p.directory, comm);
         if (folder.empty())
           pcout << "  no checkpoint in " << p.directory
                 << ": starting from the beginning" << std::endl;
@@ -410,7 +419,17 @@ namespace amfrac
           resume(CheckpointStore::read(folder, comm));
       }
     if (restart)
-      restore_common();
+      {
+        restore_common();
+        // Checkpoints after the one resumed from belong to a future this
+        // run replaces: newest() must not pick them, nor Keep prune the
+        // new ones in their favour.
+        const unsigned int dropped
+          = checkpoints->remove_after(restart->run.get_integer("number"));
+        if (dropped > 0)
+          pcout << "  removed " << dropped
+                << " later checkpoint(s) of the run before" << std::endl;
+      }
     else
       checkpoints->clear();
     checkpoint_clock.restart();
@@ -455,9 +474,25 @@ namespace amfrac
       Timer              watch;
       CheckpointData     run, part;
       run.put_integer("step", step);
+      run.put_integer("number", number);
       save_common(run, part);
       save(run, part);
-      folder             = checkpoints->write(number, run, part);
+      try
+        {
+          folder = checkpoints->write(number, run, part);
+        }
+      catch (const CollectiveError &e)
+        {
+          // A routine checkpoint that fails (a full disk) must not end
+          // hours of valid computation; one asked for by a signal or
+          // Stop after step must.
+          if (signal != 0 || stop)
+            throw;
+          pcout << "amfrac: warning: checkpoint " << number
+                << " not written, the run goes on: " << e.what() << std::endl;
+          checkpoint_clock.restart();
+          return;
+        }
       const double bytes = Utilities::MPI::sum(
         double(part.payload_bytes() + (root ? run.payload_bytes() : 0)), comm);
       seconds_in_checkpoints += watch.wall_time();
@@ -468,9 +503,9 @@ namespace amfrac
     const std::string resume_with
       = "; continue with: amfrac --resume " + p.directory;
     if (signal != 0)
-      throw RunInterrupted(
-        std::string("stopped by ") + StopSignals::name(signal) + " after step "
-        + std::to_string(step) + ", state written to " + folder + resume_with);
+      throw RunInterrupted(std::string("stopped by ")
+                           + StopSignals::name(signal) + ", state written to "
+                           + folder + resume_with);
     if (stop)
       throw RunInterrupted("stopped after step " + std::to_string(step)
                            + " (Checkpoint/Stop after step), state written "
@@ -511,7 +546,7 @@ namespace amfrac
   Simulator<dim>::restore_newton(NewtonProgress &progress)
   {
     const CheckpointData &run = restart->run;
-    reading(restart->folder, [&]() {
+    reading(restart->folder, comm, [&]() {
       progress.t                = run.get_scalar("newton.t");
       progress.dt               = run.get_scalar("newton.dt");
       progress.dtau             = run.get_scalar("newton.dtau");
@@ -554,6 +589,8 @@ namespace amfrac
     run.put("explicit.external_work", state.external_work);
     run.put("explicit.damping_work", state.damping_work);
     run.put("explicit.initial_energy", state.initial_energy);
+    run.put_integer("explicit.last_good_step", state.last_good_step);
+    run.put("explicit.last_good_t", state.last_good_t);
     for (const auto &[name, v] : state.vectors)
       save_vector(part, name, *v);
   }
@@ -565,7 +602,7 @@ namespace amfrac
   Simulator<dim>::restore_explicit(ExplicitState &state)
   {
     const CheckpointData &run = restart->run;
-    reading(restart->folder, [&]() {
+    reading(restart->folder, comm, [&]() {
       const double dt = run.get_scalar("explicit.dt");
       if (dt != state.dt)
         throw InputError("the checkpoint's time step is " + std::to_string(dt)
@@ -577,6 +614,8 @@ namespace amfrac
       state.external_work  = run.get_scalar("explicit.external_work");
       state.damping_work   = run.get_scalar("explicit.damping_work");
       state.initial_energy = run.get_scalar("explicit.initial_energy");
+      state.last_good_step = run.get_integer("explicit.last_good_step");
+      state.last_good_t    = run.get_scalar("explicit.last_good_t");
       for (const auto &[name, v] : state.vectors)
         restore_vector(name, *v);
     });

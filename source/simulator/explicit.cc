@@ -411,8 +411,11 @@ namespace amfrac
       interfaces->set_time_step(dt);
     double        t = 0;
     ExplicitState state;
-    state.dt      = dt;
-    state.vectors = {{"displacement", &solution},
+    state.dt = dt;
+    // The state of the last output step: written if the run diverges.
+    Vector last_good(owned, comm);
+    state.vectors = {{"last_good", &last_good},
+                     {"displacement", &solution},
                      {"velocity", &velocity},
                      {"acceleration", &acceleration},
                      {"load", &load},
@@ -436,14 +439,19 @@ namespace amfrac
         evaluate(t);
         initial_energy = strain_energy + kinetic_energy();
         postprocess(0, t, reaction, ledger_row());
+        last_good = solution;
       }
-    unsigned long n    = state.steps;
+    unsigned int  last_good_step = state.last_good_step;
+    double        last_good_t    = state.last_good_t;
+    unsigned long n              = state.steps;
     const auto    save = [&](CheckpointData &run, CheckpointData &part) {
       state.steps          = n;
       state.strain_energy  = strain_energy;
       state.external_work  = external_work;
       state.damping_work   = damping_work;
       state.initial_energy = initial_energy;
+      state.last_good_step = last_good_step;
+      state.last_good_t    = last_good_t;
       save_explicit(state, run, part);
     };
     const unsigned long n_start = n;
@@ -465,10 +473,6 @@ namespace amfrac
             << (n_out - out) * substeps / rate << " s to go" << std::endl;
     };
     Vector old_solution(owned, comm);
-    // The state of the last output step: written if the run diverges.
-    Vector       last_good(solution);
-    unsigned int last_good_step = n / substeps;
-    double       last_good_t    = n * dt;
     // Write the fields of the last output step and stop with @p what.
     const auto stop_with_last_good = [&](const std::string &what) {
       relevant_solution = last_good;

@@ -607,17 +607,20 @@ namespace amfrac
     const double      target
       = p.opening_control ? p.opening_increment : p.dissipation_increment;
     double dtau = target;
+    // Steps done before a restart (to tell whether this run did any).
+    std::size_t progress_at_restart = 0;
     if (restart)
       {
         NewtonProgress progress;
         restore_newton(progress);
-        t                = progress.t;
-        dt               = progress.dt;
-        dtau             = progress.dtau;
-        step             = progress.step;
-        total_iterations = progress.total_iterations;
-        by_dissipation   = progress.by_dissipation;
-        iterations       = progress.iterations;
+        progress_at_restart = progress.iterations.size();
+        t                   = progress.t;
+        dt                  = progress.dt;
+        dtau                = progress.dtau;
+        step                = progress.step;
+        total_iterations    = progress.total_iterations;
+        by_dissipation      = progress.by_dissipation;
+        iterations          = progress.iterations;
       }
     const auto save = [&](CheckpointData &run, CheckpointData &part) {
       save_newton(
@@ -748,7 +751,10 @@ namespace amfrac
           }
         checkpoint_after_step(step, step, true, t >= end * (1 - 1e-12), save);
       }
-    if (parameters.buckling.active())
+    // A run resumed from its last step has nothing left to do; its
+    // buckling analysis is in the buckling.csv of the run before.
+    if (parameters.buckling.active()
+        && !(restart && iterations.size() == progress_at_restart))
       analyse_newton_buckling(solver, t);
     std::sort(iterations.begin(), iterations.end());
     pcout << "  " << step << " steps, " << total_iterations

@@ -394,7 +394,7 @@ namespace amfrac
     if (resumable && !restart && parameters.checkpoint.resume)
       {
         const std::string folder
-          = CheckpointStore::newest(parameters.checkpoint.directory);
+          = CheckpointStore::newest(parameters.checkpoint.directory, comm);
         if (!folder.empty())
           resume(CheckpointStore::read(folder, comm));
       }
@@ -513,7 +513,9 @@ namespace amfrac
         checkpoint_after_step(
           step, step, true, step == n_steps, [](auto &, auto &) {});
       }
-    if (parameters.buckling.active())
+    // A run resumed from its last step has nothing left to do; its
+    // buckling analysis is in the buckling.csv of the run before.
+    if (parameters.buckling.active() && first <= n_steps)
       analyse_buckling(solver, constraints, n_steps * dt);
   }
 

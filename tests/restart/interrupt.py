@@ -17,7 +17,9 @@ usage: interrupt.py AMFRAC CHECKPOINT_DIFF WORKDIR SCENE.prm [APPEND.prm]
    checkpoint must read back; the last resume (with a checkpoint folder cut
    off while being written planted beside the others) runs to the end and
    must end in the reference's state.
-Also: a checkpoint with a flipped byte is refused (exit status 1, a message
+Also: resumed once more from the older of its two checkpoints, the SIGTERM
+run deletes the later one and ends exactly again; a checkpoint with a
+flipped byte is refused (exit status 1, a message
 naming the file).
 Exit status 0 on success; the first failure is printed.
 """
@@ -132,6 +134,18 @@ def main():
         fail("resuming after SIGTERM failed (see %s)" % log)
     compare(diff, reference, os.path.join(workdir, "term", "checkpoints"),
             "the run resumed after SIGTERM")
+
+    # Resumed again from the older checkpoint (the one SIGTERM wrote): the
+    # later one goes, and the run ends in the same state once more.
+    older = sorted(glob.glob(os.path.join(workdir, "term", "checkpoints",
+                                          "checkpoint-*[0-9]")))[0]
+    log = os.path.join(workdir, "term-again.log")
+    if start(amfrac, ["--resume", os.path.relpath(older, workdir)], log,
+             workdir).wait() != 0 \
+            or "removed 1 later checkpoint" not in open(log).read():
+        fail("resuming from an older checkpoint (see %s)" % log)
+    compare(diff, reference, os.path.join(workdir, "term", "checkpoints"),
+            "the run resumed from an older checkpoint")
 
     # A damaged checkpoint is refused with a message naming it.
     damaged = os.path.join(workdir, "damaged")

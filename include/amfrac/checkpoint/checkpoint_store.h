@@ -43,6 +43,16 @@ namespace amfrac
     static std::string
     newest(const std::string &directory);
 
+    /** The same, decided by rank 0 for all ranks (collective). */
+    static std::string
+    newest(const std::string &directory, const MPI_Comm comm);
+
+    /** Delete the checkpoints numbered above @p number (a run resumed
+     * from an older checkpoint discards the future it had); returns how
+     * many. Collective. */
+    unsigned int
+    remove_after(const unsigned long number) const;
+
     /** A checkpoint as read back: rank 0's run file and the parts of all
      * ranks that wrote it (any number of ranks may read it). */
     struct Contents

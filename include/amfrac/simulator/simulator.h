@@ -333,10 +333,14 @@ namespace amfrac
      * steps done, the scalars of the ledger and the vectors, by name. */
     struct ExplicitState
     {
-      unsigned long                   steps = 0;
-      double                          dt = 0, strain_energy = 0;
-      double                          external_work = 0, damping_work = 0;
-      double                          initial_energy = 0;
+      unsigned long steps = 0;
+      double        dt = 0, strain_energy = 0;
+      double        external_work = 0, damping_work = 0;
+      double        initial_energy = 0;
+      /** The output step whose state a divergence writes (the vector
+       * "last_good"), and its time. */
+      unsigned int                    last_good_step = 0;
+      double                          last_good_t    = 0;
       std::map<std::string, Vector *> vectors;
     };
     void
