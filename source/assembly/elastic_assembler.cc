@@ -200,6 +200,35 @@ namespace amfrac
 
   template <int dim>
   void
+  ElasticAssembler<dim>::check_load_finite(const bool        finite,
+                                           const Point<dim> &where,
+                                           const double      t) const
+  {
+    const MPI_Comm comm
+      = dofs.copy_handler().get_triangulation().get_communicator();
+    if (Utilities::MPI::max(finite ? 0 : 1, comm) == 0)
+      return;
+    std::string mine;
+    if (!finite)
+      {
+        std::ostringstream message;
+        message << "a load (Boundary conditions: Patch load, Traction, "
+                   "Pressure or Body force) is not finite (NaN or inf) at t="
+                << t << " near (" << where
+                << "): look for an expression that is not defined there (a "
+                   "sqrt or log of a negative number, a division by zero)";
+        mine = message.str();
+      }
+    // Every rank throws the first rank's message (rank 0 prints it).
+    for (const auto &message : Utilities::MPI::all_gather(comm, mine))
+      if (!message.empty())
+        throw NonFiniteValue(message);
+  }
+
+
+
+  template <int dim>
+  void
   ElasticAssembler<dim>::assemble_load(const Loads<dim> &loads,
                                        const double      t,
                                        const CellList   &cells,
@@ -228,25 +257,7 @@ namespace amfrac
           finite = false, where = cell->center();
       }
     f.compress(VectorOperation::add);
-    const MPI_Comm comm
-      = dofs.copy_handler().get_triangulation().get_communicator();
-    if (Utilities::MPI::max(finite ? 0 : 1, comm) == 0)
-      return;
-    std::string mine;
-    if (!finite)
-      {
-        std::ostringstream message;
-        message << "a load (Boundary conditions: Patch load, Traction, "
-                   "Pressure or Body force) is not finite (NaN or inf) at t="
-                << t << " near (" << where
-                << "): look for an expression that is not defined there (a "
-                   "sqrt or log of a negative number, a division by zero)";
-        mine = message.str();
-      }
-    // Every rank throws the first rank's message (rank 0 prints it).
-    for (const auto &message : Utilities::MPI::all_gather(comm, mine))
-      if (!message.empty())
-        throw NonFiniteValue(message);
+    check_load_finite(finite, where, t);
   }
 
 
@@ -460,13 +471,23 @@ namespace amfrac
     FullMatrix<double>                   K(n, n);
     dealii::Vector<double>               f(n);
     std::vector<types::global_dof_index> indices(n);
-    rhs = 0;
+    rhs               = 0;
+    bool       finite = true;
+    Point<dim> where;
     for (const auto &cell : dofs.copy_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         {
           scratch.fe_values.reinit(cell);
           dofs.get_dof_indices(cell, indices);
           cell_load(scratch, cell, loads, t, f);
+          if (!std::all_of(f.begin(), f.end(), [](const double v) {
+                return std::isfinite(v);
+              }))
+            {
+              if (finite)
+                finite = false, where = cell->center();
+              f = 0;
+            }
           const bool inhomogeneous
             = std::any_of(indices.begin(), indices.end(), [&](const auto i) {
                 return constraints.is_inhomogeneously_constrained(i);
@@ -480,6 +501,7 @@ namespace amfrac
             constraints.distribute_local_to_global(f, indices, rhs);
         }
     rhs.compress(VectorOperation::add);
+    check_load_finite(finite, where, t);
   }
 
 

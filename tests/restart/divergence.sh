@@ -1,13 +1,14 @@
 #!/bin/bash
 # Divergence: a Newton solve that cannot converge, a NaN in a prescribed
-# displacement, an explicit run that blows up and a NaN in an explicit load
+# displacement, an explicit run that blows up, a NaN in an explicit load and
+# a NaN in the pressure of a linear static run
 # must each stop with exit status 1, one `amfrac: error:` line saying what
 # happened, history.csv with whole rows up to the last good step, and the
 # fields of the last good state written (the newest entry of the field
 # series exists).
-# usage: divergence.sh AMFRAC WORKDIR DCB.prm DCB_SHORT.prm IMPACT.prm IMPACT_COARSE.prm
+# usage: divergence.sh AMFRAC WORKDIR DCB.prm DCB_SHORT.prm IMPACT.prm IMPACT_COARSE.prm BEAM.prm
 set -u
-amfrac=$1 work=$2 dcb=$3 dcb_short=$4 impact=$5 impact_coarse=$6
+amfrac=$1 work=$2 dcb=$3 dcb_short=$4 impact=$5 impact_coarse=$6 beam=$7
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
 failures=0
 
@@ -69,6 +70,18 @@ subsection Boundary conditions
   subsection Patch load
     set Force = t < 1e-5 ? 1250*t/1e-5 : sqrt(1e-5 - t)
   end
+end"
+
+# A linear static run: the steps before the NaN are written.
+expect static_nan "is not finite" "$(cat "$beam")
+subsection Boundary conditions
+  subsection y+
+    set Pressure = t < 0.6 ? (abs(x - L/2) < 2 ? t : 0) : sqrt(0.5 - t)
+  end
+end
+subsection Time
+  set End time        = 1
+  set Number of steps = 4
 end"
 
 exit $failures

@@ -119,6 +119,14 @@ namespace amfrac
       const typename TiedCopyDoFs<dim>::CellIterator &cell) const;
 
   private:
+    /** Throw NonFiniteValue on every rank (the first failing rank's
+     * message, naming @p where and @p t) unless every rank's load was
+     * @p finite. Collective. */
+    void
+    check_load_finite(const bool        finite,
+                      const Point<dim> &where,
+                      const double      t) const;
+
     const TiedCopyDoFs<dim>               &dofs;
     const std::vector<PlyProperties<dim>> &plies;
     const unsigned int                     quadrature_degree;
