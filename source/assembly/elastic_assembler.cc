@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <amfrac/assembly/elastic_assembler.h>
+#include <amfrac/base/first_failure.h>
 #include <amfrac/parameters/input_error.h>
 #include <cmath>
 #include <deal.II/base/mpi.h>
@@ -206,8 +207,6 @@ namespace amfrac
   {
     const MPI_Comm comm
       = dofs.copy_handler().get_triangulation().get_communicator();
-    if (Utilities::MPI::max(finite ? 0 : 1, comm) == 0)
-      return;
     std::string mine;
     if (!finite)
       {
@@ -220,9 +219,7 @@ namespace amfrac
         mine = message.str();
       }
     // Every rank throws the first rank's message (rank 0 prints it).
-    for (const auto &message : Utilities::MPI::all_gather(comm, mine))
-      if (!message.empty())
-        throw NonFiniteValue(message);
+    throw_first_failure<NonFiniteValue>(comm, mine);
   }
 
 

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <amfrac/base/first_failure.h>
 #include <amfrac/checkpoint/checkpoint_store.h>
 #include <amfrac/parameters/input_error.h>
 #include <chrono>
@@ -46,12 +47,7 @@ namespace amfrac
           if (failure.empty())
             failure = "unknown error";
         }
-      const auto failures = dealii::Utilities::MPI::all_gather(comm, failure);
-      for (unsigned int r = 0; r < failures.size(); ++r)
-        if (!failures[r].empty())
-          throw Error(failures.size() > 1 ?
-                        "(rank " + std::to_string(r) + ") " + failures[r] :
-                        failures[r]);
+      throw_first_failure<Error>(comm, failure, true);
     }
 
     void

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <amfrac/base/first_failure.h>
 #include <amfrac/checkpoint/stop_signals.h>
 #include <amfrac/parameters/input_error.h>
 #include <amfrac/simulator/simulator.h>
@@ -125,11 +126,7 @@ namespace amfrac
             failure
               = "cannot resume from checkpoint '" + folder + "': " + failure;
         }
-      if (Utilities::MPI::max(failure.empty() ? 0 : 1, comm) == 0)
-        return;
-      for (const auto &message : Utilities::MPI::all_gather(comm, failure))
-        if (!message.empty())
-          throw InputError(message);
+      throw_first_failure<InputError>(comm, failure);
     }
   } // namespace
 

@@ -1,3 +1,4 @@
+#include <amfrac/base/first_failure.h>
 #include <amfrac/checkpoint/stop_signals.h>
 #include <amfrac/parameters/expressions.h>
 #include <amfrac/parameters/input_error.h>
@@ -249,14 +250,8 @@ namespace amfrac
   void
   Simulator<dim>::check_finite(const std::string &not_finite) const
   {
-    // Collective: the first rank that saw a non-finite value says which
-    // (one integer reduction when all is well).
-    if (Utilities::MPI::max(not_finite.empty() ? 0 : 1, comm) == 0)
-      return;
-    const auto messages = Utilities::MPI::all_gather(comm, not_finite);
-    for (const auto &message : messages)
-      if (!message.empty())
-        throw NonFiniteValue(message);
+    // The first rank that saw a non-finite value says which.
+    throw_first_failure<NonFiniteValue>(comm, not_finite);
   }
 
 
