@@ -4,9 +4,11 @@
 #include <amfrac/parameters/input_error.h>
 #include <cmath>
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold_lib.h>
 #include <map>
 #include <random>
+#include <sstream>
 
 namespace amfrac
 {
@@ -147,6 +149,30 @@ namespace amfrac
                                        geometry.mesh_distortion,
                                        box,
                                        h);
+      }
+
+    if (!geometry.imperfection.empty())
+      {
+        const auto imperfection
+          = make_expression_function<dim>(parameters::split_expressions(
+                                            geometry.imperfection),
+                                          dim,
+                                          "",
+                                          "Geometry/Imperfection");
+        GridTools::transform(
+          [&](const Point<dim> &p) {
+            Point<dim> moved = p;
+            for (unsigned int d = 0; d < dim; ++d)
+              moved[d] += imperfection->value(p, d);
+            if (!std::isfinite(moved.norm()))
+              {
+                std::ostringstream where;
+                where << "is not finite (NaN or inf) at (" << p << ")";
+                throw InputError("Geometry/Imperfection", where.str());
+              }
+            return moved;
+          },
+          triangulation);
       }
 
     if (!geometry.refinement_region.empty())

@@ -119,6 +119,36 @@ namespace amfrac
                         "1",
                         Patterns::Integer(0, 5),
                         "How often the Refinement region is refined.");
+      prm.declare_entry(
+        "Imperfection",
+        "",
+        Patterns::Anything(),
+        "A geometric imperfection [mm]: the vertices of the mesh are moved "
+        "by this displacement, one expression of x, y, (z) per component "
+        "separated by ';' (empty: none), e.g. for the first mode of a "
+        "clamped strip of length 100 and 1 % of its thickness h = 1 in 2D: "
+        "0; 0.005*(1-cos(2*pi*x/100)). Applied after the global "
+        "refinements and the distortion, before the Refinement region "
+        "(whose new vertices follow the cells' straight edges); a hole's "
+        "boundary stays on its circle. The ply faces move with the "
+        "vertices: an imperfection is stress free.");
+      prm.declare_entry(
+        "Imperfection mode",
+        "0",
+        Patterns::Integer(0, 50),
+        "If positive, also move the vertices by this buckling mode (1: the "
+        "lowest) of the small-strain state at Time/End time, scaled to a "
+        "largest displacement of Imperfection amplitude: the usual seed of "
+        "a post-buckling run. The linear solve and eigenvalue analysis use "
+        "the Linear solver and Buckling subsections (Block size, Tolerance, "
+        "Max basis size); nothing is written. Applied after Imperfection, "
+        "on the initial mesh.");
+      prm.declare_entry("Imperfection amplitude",
+                        "0",
+                        Patterns::Double(),
+                        "The largest displacement [mm] of the Imperfection "
+                        "mode (its sign picks the direction: positive along "
+                        "the mode's largest component).");
       prm.leave_subsection();
     }
 
@@ -131,18 +161,21 @@ namespace amfrac
       stacking_sequence = prm.get("Stacking sequence");
       ply_thickness     = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Ply thickness")));
-      total_thickness       = prm.get_double("Total thickness");
-      length                = prm.get_double("Length");
-      width                 = prm.get_double("Width");
-      elements_along_length = prm.get_integer("Elements along length");
-      elements_along_width  = prm.get_integer("Elements along width");
-      elements_per_ply      = prm.get_integer("Elements per ply");
-      global_refinements    = prm.get_integer("Global refinements");
-      mesh_distortion       = prm.get_double("Mesh distortion");
-      hole_radius           = prm.get_double("Hole radius");
-      in_plane              = prm.get("2D model") == "in-plane";
-      refinement_region     = Utilities::trim(prm.get("Refinement region"));
-      region_refinements    = prm.get_integer("Region refinements");
+      total_thickness        = prm.get_double("Total thickness");
+      length                 = prm.get_double("Length");
+      width                  = prm.get_double("Width");
+      elements_along_length  = prm.get_integer("Elements along length");
+      elements_along_width   = prm.get_integer("Elements along width");
+      elements_per_ply       = prm.get_integer("Elements per ply");
+      global_refinements     = prm.get_integer("Global refinements");
+      mesh_distortion        = prm.get_double("Mesh distortion");
+      hole_radius            = prm.get_double("Hole radius");
+      in_plane               = prm.get("2D model") == "in-plane";
+      refinement_region      = Utilities::trim(prm.get("Refinement region"));
+      region_refinements     = prm.get_integer("Region refinements");
+      imperfection           = Utilities::trim(prm.get("Imperfection"));
+      imperfection_mode      = prm.get_integer("Imperfection mode");
+      imperfection_amplitude = prm.get_double("Imperfection amplitude");
       prm.leave_subsection();
 
       // Lengths are in mm: a value beyond a kilometre is a units mistake
@@ -160,6 +193,12 @@ namespace amfrac
       require(hole_radius == 0 || mesh_distortion == 0,
               "Geometry/Mesh distortion",
               "is for the box mesh: set it to 0 with a Hole radius");
+      require(imperfection_mode == 0
+                || (imperfection_amplitude != 0
+                    && std::abs(imperfection_amplitude) <= largest),
+              "Geometry/Imperfection amplitude",
+              "must be nonzero (and at most 1e6 mm) with an Imperfection "
+              "mode");
       try
         {
           plies = parse_stacking_sequence(stacking_sequence);
@@ -1275,7 +1314,7 @@ namespace amfrac
       prm.declare_entry(
         "Control",
         "displacement",
-        Patterns::Selection("displacement|dissipation|opening"),
+        Patterns::Selection("displacement|dissipation|opening|arc-length"),
         "displacement: steps of the load parameter t. dissipation: as "
         "displacement while the structure is (nearly) elastic, then steps of "
         "the dissipated energy (Gutierrez 2004, Verhoosel et al. 2009), which "
@@ -1286,7 +1325,17 @@ namespace amfrac
         "summed normal opening of the still bonded interface points "
         "(Opening increment), an indirect displacement control in the "
         "spirit of Alfano & Crisfield's local arc-length: it stays "
-        "monotonic through the local snap-backs of single points.");
+        "monotonic through the local snap-backs of single points. "
+        "arc-length: Crisfield's arc-length method from the first step, "
+        "for limit points and snap-backs of the whole structure (buckling, "
+        "snap-through): each step has the length |du|^2 + psi^2 q^2 dt^2 = "
+        "l^2 (Arc-length psi = 0: cylindrical, > 0: spherical; q = |du/dt| "
+        "of the first step), the first step as long as a nominal step of t, "
+        "later ones halved on failure and doubled back after easy steps; "
+        "the root of the constraint is the one continuing the previous "
+        "step's direction. t may decrease; the run ends when t reaches "
+        "End time or after Maximum arc-length steps. Needs loads "
+        "and prescribed displacements proportional to t.");
       prm.declare_entry("Dissipation increment",
                         "0.01",
                         Patterns::Double(0),
@@ -1294,6 +1343,20 @@ namespace amfrac
                         "control, in N mm (N mm per mm of width in 2D); "
                         "also the threshold at which a displacement step "
                         "switches to it (or to opening control).");
+      prm.declare_entry("Arc-length psi",
+                        "0",
+                        Patterns::Double(0),
+                        "Control = arc-length: the weight of the load "
+                        "parameter in the step length (0: cylindrical "
+                        "arc-length, displacements only; 1: the load "
+                        "parameter counts as much as the displacement it "
+                        "produced in the first step).");
+      prm.declare_entry("Maximum arc-length steps",
+                        "1000",
+                        Patterns::Integer(1),
+                        "Control = arc-length: the run ends after this "
+                        "many steps even if t has not reached End time "
+                        "(a path that turns back).");
       prm.declare_entry("Opening increment",
                         "0.01",
                         Patterns::Double(0),
@@ -1320,6 +1383,9 @@ namespace amfrac
         = prm.get("Control") == "dissipation" || opening_control;
       dissipation_increment = prm.get_double("Dissipation increment");
       opening_increment     = prm.get_double("Opening increment");
+      arc_length            = prm.get("Control") == "arc-length";
+      arc_length_psi        = prm.get_double("Arc-length psi");
+      max_arc_length_steps  = prm.get_integer("Maximum arc-length steps");
       prm.leave_subsection();
       require(tolerance > 0,
               "Nonlinear solver/Residual tolerance",
@@ -1345,6 +1411,19 @@ namespace amfrac
                         Patterns::Integer(2, 3),
                         "2: plane strain in the (x, thickness) plane; 3: "
                         "full 3D laminate.");
+      prm.declare_entry(
+        "Kinematics",
+        "small strain",
+        Patterns::Selection("small strain|total Lagrangian"),
+        "small strain: linear strain, the bulk stiffness assembled once. "
+        "total Lagrangian: Green-Lagrange strain and second Piola-Kirchhoff "
+        "stress (St Venant-Kirchhoff plies with the small-strain "
+        "stiffness), for large rotations and buckling; the load steps are "
+        "solved by Newton-Raphson with the consistent tangent (material and "
+        "geometric stiffness), with or without cohesive interfaces. Loads "
+        "are dead loads on the undeformed configuration (a pressure keeps "
+        "its initial direction); the field output's stress and strain are "
+        "the small-strain ones of the displacement.");
       Geometry::declare_parameters(prm);
       Materials::declare_parameters(prm);
       Discretization::declare_parameters(prm);
@@ -1364,7 +1443,8 @@ namespace amfrac
     void
     Parameters::parse_parameters(ParameterHandler &prm)
     {
-      dimension = prm.get_integer("Dimension");
+      dimension        = prm.get_integer("Dimension");
+      total_lagrangian = prm.get("Kinematics") == "total Lagrangian";
       geometry.parse_parameters(prm);
       geometry.in_plane = geometry.in_plane && dimension == 2;
       if (dimension == 2 && geometry.hole_radius > 0 && !geometry.in_plane)
@@ -1404,6 +1484,15 @@ namespace amfrac
           "interfaces; a linear scene adapts by Refinement cycles");
       buckling.parse_parameters(prm);
       check_buckling_input();
+      check_kinematics_input();
+      if (geometry.imperfection_mode > 0
+          && (time.explicit_dynamics || geometry.in_plane))
+        throw InputError("Geometry/Imperfection mode",
+                         "a buckling mode is computed for a static scene "
+                         "with an out-of-plane direction: it needs "
+                         "Time/Time integration = static and not 2D model "
+                         "= in-plane");
+      check_arc_length_input();
       checkpoint.parse_parameters(prm, output.directory);
       if (adaptivity.active() && checkpoint.by_count_or_stop())
         throw InputError(checkpoint.every_n_steps > 0 ?
@@ -1419,6 +1508,67 @@ namespace amfrac
                          "adaptive refinement of explicit runs is not "
                          "available yet (the explicit path takes no hanging "
                          "nodes); switch the Adaptivity subsection off");
+    }
+
+
+
+    void
+    Parameters::check_arc_length_input() const
+    {
+      if (!nonlinear_solver.arc_length)
+        return;
+      const std::string name = "Nonlinear solver/Control";
+      if (time.explicit_dynamics)
+        throw InputError(name,
+                         "arc-length follows a static equilibrium path: it "
+                         "needs Time/Time integration = static");
+      if (!total_lagrangian && cohesive.interfaces.empty())
+        throw InputError(name,
+                         "arc-length follows a nonlinear path, and this "
+                         "scene is linear: set Kinematics = total "
+                         "Lagrangian or make interfaces cohesive");
+      if (adaptivity.during_history())
+        throw InputError(name,
+                         "arc-length with refinement during the load "
+                         "history is not available yet; switch Refine "
+                         "every, Error threshold and Process zone elements "
+                         "off");
+    }
+
+
+
+    void
+    Parameters::check_kinematics_input() const
+    {
+      if (!total_lagrangian)
+        return;
+      const std::string why = "Kinematics = total Lagrangian ";
+      if (time.explicit_dynamics)
+        throw InputError("Kinematics",
+                         why
+                           + "is for static (load-stepped) runs so far: "
+                             "the explicit path has the small-strain "
+                             "internal force; set Time/Time integration = "
+                             "static or Kinematics = small strain");
+      if (adaptivity.active())
+        throw InputError("Kinematics",
+                         why
+                           + "runs the Newton path, and refinement cycles "
+                             "are for linear scenes; set Adaptivity/"
+                             "Refinement cycles = 0");
+      if (buckling.active())
+        throw InputError("Buckling/Number of modes",
+                         "linear buckling analyses a small-strain state; "
+                         "with "
+                           + why
+                           + "follow the nonlinear path with an "
+                             "imperfection instead (or set Kinematics = small "
+                             "strain for the eigenvalue analysis)");
+      if (nonlinear_solver.dissipation_control && cohesive.interfaces.empty())
+        throw InputError("Nonlinear solver/Control",
+                         "Control = dissipation or opening follows what the "
+                         "cohesive interfaces dissipate or open, and this "
+                         "scene has none; use Control = displacement");
     }
 
 

@@ -61,6 +61,130 @@ namespace amfrac
 
 
   template <int dim>
+  BucklingEigensolver::Result
+  Simulator<dim>::small_strain_buckling(const double       t,
+                                        const unsigned int n_modes)
+  {
+    TimerOutput::Scope scope(timer, "buckling");
+    // The matrices outlive the solver, whose factorization refers to K.
+    TrilinosWrappers::SparseMatrix K, geometric;
+    LinearSolver                   solver(parameters.linear_solver);
+    AffineConstraints<double>      fixed;
+    make_constraints(t, fixed, false);
+    const IndexSet &owned = dof_layer.locally_owned_dofs();
+    Vector          state(owned, comm), rhs(owned, comm);
+    assembler.reinit_matrix(fixed, K);
+    assembler.assemble_matrix(fixed, K);
+    solver.initialize(K, rigid_body_modes(), dim, owned_node_coordinates());
+    assembler.assemble_rhs(loads, t, fixed, rhs);
+    solver.solve(state, rhs);
+    fixed.distribute(state);
+    Vector ghosted(owned, dof_layer.locally_relevant_dofs(), comm);
+    ghosted = state;
+    assembler.reinit_matrix(fixed, geometric);
+    assembler.assemble_geometric_matrix(ghosted, fixed, geometric);
+    BucklingEigensolver::Settings settings;
+    settings.n_modes        = n_modes;
+    settings.block_size     = std::min(std::max(n_modes, 1u), 2u);
+    settings.tolerance      = parameters.buckling.tolerance;
+    settings.max_basis_size = std::max(parameters.buckling.max_basis_size,
+                                       n_modes + 2 * settings.block_size);
+    solver.set_check_residual(false);
+    return BucklingEigensolver(settings).solve(
+      [&](std::vector<Vector> &x, const std::vector<Vector> &b) {
+        solver.solve(x, b);
+      },
+      K,
+      geometric,
+      [&](const types::global_dof_index i) { return !fixed.is_constrained(i); },
+      state);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::seed_imperfection_from_mode()
+  {
+    const unsigned int k = parameters.geometry.imperfection_mode;
+    const double       t = parameters.time.end_time;
+    collect_supports();
+    const auto result = small_strain_buckling(t, k);
+    if (result.load_factors.size() < k)
+      throw InputError("Geometry/Imperfection mode",
+                       "the small-strain state at End time has "
+                         + std::to_string(result.load_factors.size())
+                         + " positive buckling load factor(s) among the lowest "
+                         + std::to_string(k)
+                         + ": its load does not buckle the laminate into mode "
+                         + std::to_string(k));
+    // The mode on every rank (all vertices move identically everywhere),
+    // hanging nodes interpolated, scaled to the amplitude with its largest
+    // component positive (an eigenvector's sign is arbitrary).
+    Vector                    mode = result.modes[k - 1];
+    AffineConstraints<double> homogeneous;
+    make_constraints(t, homogeneous, true);
+    homogeneous.distribute(mode);
+    const double largest        = mode.linfty_norm();
+    double       signed_largest = 0;
+    for (const auto i : dof_layer.locally_owned_dofs())
+      if (std::abs(mode(i)) == largest)
+        signed_largest = mode(i);
+    signed_largest
+      = Utilities::MPI::max(signed_largest, comm) > 0 ? largest : -largest;
+    mode *= parameters.geometry.imperfection_amplitude / signed_largest;
+    Vector everywhere(dof_layer.locally_owned_dofs(),
+                      complete_index_set(dof_layer.n_dofs()),
+                      comm);
+    everywhere = mode;
+    move_vertices(everywhere);
+    pcout << "amfrac: imperfection: buckling mode " << k
+          << " of the small-strain state at t=" << t << " (load factor "
+          << result.load_factors[k - 1] << "), largest displacement "
+          << parameters.geometry.imperfection_amplitude << " mm" << std::endl;
+    setup_after_refinement();
+    if (interfaces)
+      interfaces->setup(dof_layer, parameters.boundary_conditions.constants);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::move_vertices(const Vector &displacement)
+  {
+    // Each vertex by the mean of the values its cells give it (the copies
+    // of a duplicated node may differ).
+    const auto                          &fe = dof_layer.get_fe();
+    std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+    std::vector<Tensor<1, dim>>          shift(triangulation.n_vertices());
+    std::vector<unsigned int>            count(triangulation.n_vertices());
+    for (const auto &cell : dof_layer.copy_handler().active_cell_iterators())
+      {
+        dof_layer.get_dof_indices(cell, indices);
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            for (unsigned int c = 0; c < dim; ++c)
+              shift[cell->vertex_index(v)][c]
+                += displacement(indices[fe.component_to_system_index(c, v)]);
+            ++count[cell->vertex_index(v)];
+          }
+      }
+    std::vector<bool> moved(triangulation.n_vertices());
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+        {
+          const unsigned int index = cell->vertex_index(v);
+          if (moved[index])
+            continue;
+          cell->vertex(v) += shift[index] / count[index];
+          moved[index] = true;
+        }
+  }
+
+
+
+  template <int dim>
   void
   Simulator<dim>::analyse_buckling(LinearSolver                    &solver,
                                    const AffineConstraints<double> &fixed,
@@ -199,4 +323,8 @@ namespace amfrac
   Simulator<2>::analyse_newton_buckling(LinearSolver &, const double);
   template void
   Simulator<3>::analyse_newton_buckling(LinearSolver &, const double);
+  template void
+  Simulator<2>::seed_imperfection_from_mode();
+  template void
+  Simulator<3>::seed_imperfection_from_mode();
 } // namespace amfrac

@@ -534,6 +534,12 @@ namespace amfrac
     save_vector(part, "displacement", newton->converged_solution);
     save_vector(part, "previous_residual", newton->previous_residual);
     save_vector(part, "previous_load", newton->previous_load);
+    if (parameters.nonlinear_solver.arc_length)
+      {
+        run.put("newton.arc_scale", newton->arc_scale);
+        run.put("newton.arc_nominal", newton->arc_nominal);
+        save_vector(part, "arc_previous", newton->arc_previous);
+      }
   }
 
 
@@ -559,6 +565,12 @@ namespace amfrac
       restore_vector("displacement", newton->converged_solution);
       restore_vector("previous_residual", newton->previous_residual);
       restore_vector("previous_load", newton->previous_load);
+      if (parameters.nonlinear_solver.arc_length)
+        {
+          newton->arc_scale   = run.get_scalar("newton.arc_scale");
+          newton->arc_nominal = run.get_scalar("newton.arc_nominal");
+          restore_vector("arc_previous", newton->arc_previous);
+        }
     });
     solution          = newton->converged_solution;
     relevant_solution = solution;

@@ -242,7 +242,7 @@ namespace amfrac
       const double external_work = newton->external_work;
       setup_newton();
       if (parameters.nonlinear_solver.dissipation_control)
-        setup_dissipation_control();
+        setup_load_pattern(false, "dissipation or opening");
       newton->external_work = external_work;
       dof_layer.gather(new_copies, newton->converged_solution);
       make_constraints(t, constraints, false);

@@ -1,7 +1,9 @@
 // The quasi-static Newton-Raphson path of Simulator: scenes with cohesive
-// interfaces. The bulk is linear, so its matrix is assembled once (condensed
-// for the Newton increments, and unconstrained for residuals and
-// reactions); each iteration adds only the interface tangent.
+// interfaces or total Lagrangian kinematics. A small-strain bulk is linear,
+// so its matrix is assembled once (condensed for the Newton increments, and
+// unconstrained for residuals and reactions) and each iteration adds only
+// the interface tangent; a total Lagrangian bulk is assembled with its
+// tangent in every iteration.
 #include <algorithm>
 #include <amfrac/parameters/input_error.h>
 #include <amfrac/simulator/simulator.h>
@@ -22,13 +24,34 @@ namespace amfrac
     template <int dim>
     bool
     stagnates(const std::vector<double>     &residuals,
-              const CohesiveInterfaces<dim> &interfaces,
+              const CohesiveInterfaces<dim> *interfaces,
               const MPI_Comm                 comm)
     {
       const std::size_t n = residuals.size();
       // Collective: every rank evaluates the contact count.
-      const bool settled = interfaces.contact_changes(comm) == 0;
+      const bool settled
+        = !interfaces || interfaces->contact_changes(comm) == 0;
       return n >= 6 && residuals[n - 1] > 0.5 * residuals[n - 3] && settled;
+    }
+
+    /** The root x of a x^2 + b x + c = 0 with the larger x * preference
+     * (the one that continues the path); false if there is none. */
+    bool
+    arc_length_root(const double a,
+                    const double b,
+                    const double c,
+                    const double preference,
+                    double      &x)
+    {
+      const double discriminant = b * b - 4 * a * c;
+      if (!(a > 0) || !(discriminant >= 0))
+        return false;
+      // The cancellation-free pair of roots.
+      const double q  = -0.5 * (b + std::copysign(std::sqrt(discriminant), b));
+      const double x1 = q / a;
+      const double x2 = q != 0 ? c / q : -x1;
+      x               = x1 * preference >= x2 * preference ? x1 : x2;
+      return std::isfinite(x);
     }
 
     /** " |r|: r0 r1 ..." for the log. */
@@ -57,17 +80,21 @@ namespace amfrac
     const IndexSet &relevant = dof_layer.locally_relevant_dofs();
     TrilinosWrappers::SparsityPattern pattern(owned, owned, relevant, comm);
     assembler.add_couplings(newton->increment_constraints, pattern);
-    interfaces->add_couplings(newton->increment_constraints, pattern);
+    if (interfaces)
+      interfaces->add_couplings(newton->increment_constraints, pattern);
     pattern.compress();
-    newton->bulk_condensed.reinit(pattern);
     system_matrix.reinit(pattern);
-    assembler.assemble_matrix(newton->increment_constraints,
-                              newton->bulk_condensed);
-
     AffineConstraints<double> none;
     none.close();
     assembler.reinit_matrix(none, newton->bulk_unconstrained);
-    assembler.assemble_matrix(none, newton->bulk_unconstrained);
+    // A total Lagrangian bulk is assembled per iteration (update_residual).
+    if (!finite_strain)
+      {
+        newton->bulk_condensed.reinit(pattern);
+        assembler.assemble_matrix(newton->increment_constraints,
+                                  newton->bulk_condensed);
+        assembler.assemble_matrix(none, newton->bulk_unconstrained);
+      }
 
     for (Vector *v : {&solution,
                       &newton->converged_solution,
@@ -80,7 +107,9 @@ namespace amfrac
                       &newton->load_pattern,
                       &newton->pattern_response,
                       &newton->pattern_condensed,
-                      &newton->pattern_increment})
+                      &newton->pattern_increment,
+                      &newton->load_unit,
+                      &newton->arc_previous})
       v->reinit(owned, comm);
     newton->interface_force.reinit(owned, relevant, comm, true);
     relevant_solution.reinit(owned, relevant, comm);
@@ -93,25 +122,41 @@ namespace amfrac
   Simulator<dim>::update_residual(const Vector                   &trial,
                                   TrilinosWrappers::SparseMatrix *tangent)
   {
-    NewtonState &n = *newton;
-    {
-      TimerOutput::Scope scope(timer, "interfaces");
-      relevant_solution = trial;
-      n.interface_force = 0;
-      if (tangent)
-        tangent->copy_from(n.bulk_condensed);
-      interfaces->assemble(relevant_solution,
-                           n.interface_force,
-                           n.increment_constraints,
-                           tangent);
-      n.interface_force.compress(VectorOperation::add);
-      if (tangent)
-        tangent->compress(VectorOperation::add);
-    }
-    TimerOutput::Scope scope(timer, "residual");
-    n.bulk_unconstrained.vmult(n.residual, trial);
+    NewtonState &n    = *newton;
+    relevant_solution = trial;
+    if (finite_strain)
+      {
+        // F_int(u) into the residual and, with a tangent, K_T condensed
+        // into it and unconstrained into bulk_unconstrained.
+        TimerOutput::Scope scope(timer, "bulk (total Lagrangian)");
+        n.strain_energy
+          = finite_strain->assemble(relevant_solution,
+                                    n.increment_constraints,
+                                    n.residual,
+                                    tangent,
+                                    tangent ? &n.bulk_unconstrained : nullptr);
+      }
+    else
+      {
+        TimerOutput::Scope scope(timer, "residual");
+        n.bulk_unconstrained.vmult(n.residual, trial);
+        if (tangent)
+          tangent->copy_from(n.bulk_condensed);
+      }
+    if (interfaces)
+      {
+        TimerOutput::Scope scope(timer, "interfaces");
+        n.interface_force = 0;
+        interfaces->assemble(relevant_solution,
+                             n.interface_force,
+                             n.increment_constraints,
+                             tangent);
+        n.interface_force.compress(VectorOperation::add);
+        if (tangent)
+          tangent->compress(VectorOperation::add);
+        n.residual += n.interface_force;
+      }
     n.residual -= n.external_load;
-    n.residual += n.interface_force;
     return condense_residual();
   }
 
@@ -167,6 +212,8 @@ namespace amfrac
     // K_T d = K_bulk d + K_interfaces(relevant_solution) d, unconstrained.
     NewtonState &n = *newton;
     n.bulk_unconstrained.vmult(product, direction);
+    if (!interfaces)
+      return;
     Vector relevant_direction(dof_layer.locally_owned_dofs(),
                               dof_layer.locally_relevant_dofs(),
                               comm);
@@ -217,7 +264,9 @@ namespace amfrac
   {
     NewtonState &n    = *newton;
     relevant_solution = state;
+    // dR/dt = K_T g(1) - f(1).
     tangent_product(n.load_pattern, n.pattern_response);
+    n.pattern_response -= n.load_unit;
     condense(n.pattern_response, n.pattern_condensed);
     return load_force(n.pattern_response);
   }
@@ -233,8 +282,11 @@ namespace amfrac
     // afterwards.
     // The bulk never changes: if no interface point changed its tangent
     // since the last factorization (elastic steps, open cracks), reuse it.
+    // A total Lagrangian bulk changes with every iteration.
     const bool unchanged
-      = Utilities::MPI::min(interfaces->tangent_unchanged() ? 1 : 0, comm) == 1;
+      = !finite_strain && interfaces
+        && Utilities::MPI::min(interfaces->tangent_unchanged() ? 1 : 0, comm)
+             == 1;
     if (!solver_ready)
       solver.initialize(system_matrix,
                         rigid_body_modes(),
@@ -244,7 +296,7 @@ namespace amfrac
       solver.update_values();
     if (!solver_ready || !unchanged)
       ++n_factorizations;
-    if (!solver_ready || !unchanged)
+    if ((!solver_ready || !unchanged) && interfaces)
       interfaces->mark_factorized();
     solver_ready = true;
     solver.solve(x, b);
@@ -254,15 +306,18 @@ namespace amfrac
 
   template <int dim>
   void
-  Simulator<dim>::setup_dissipation_control()
+  Simulator<dim>::setup_load_pattern(const bool         with_loads,
+                                     const std::string &control)
   {
-    // Dissipation control scales the prescribed displacements with t:
-    // check that they are proportional to t (and that no load is applied).
-    if (!loads.empty())
-      throw InputError("Nonlinear solver/Control",
-                       "dissipation control needs all loads to be "
-                       "prescribed displacements (this scene has tractions, "
-                       "pressures or a body force)");
+    // Path following scales the prescribed displacements (and loads) with
+    // t: check that they are proportional to t.
+    const std::string name = "Nonlinear solver/Control";
+    if (!with_loads && !loads.empty())
+      throw InputError(name,
+                       control
+                         + " control needs all loads to be "
+                           "prescribed displacements (this scene has "
+                           "tractions, pressures or a body force)");
     const double              end = parameters.time.end_time;
     AffineConstraints<double> at_end, halfway;
     make_constraints(1., at_end, false);
@@ -275,11 +330,24 @@ namespace amfrac
                                    - 0.5 * end * line.inhomogeneity)
                             <= 1e-10 * end * std::abs(line.inhomogeneity);
     if (Utilities::MPI::min(proportional ? 1 : 0, comm) == 0)
-      throw InputError("Nonlinear solver/Control",
-                       "dissipation control needs prescribed displacements "
-                       "proportional to t (g(t) = t g(1))");
+      throw InputError(name,
+                       control
+                         + " control needs prescribed displacements "
+                           "proportional to t (g(t) = t g(1))");
     newton->load_pattern = 0;
     at_end.distribute(newton->load_pattern);
+    newton->load_unit = 0;
+    if (!with_loads || loads.empty())
+      return;
+    assembler.assemble_load(loads, 1., newton->load_unit);
+    Vector half(newton->load_unit);
+    assembler.assemble_load(loads, 0.5 * end, half);
+    half.add(-0.5 * end, newton->load_unit);
+    if (!(half.l2_norm() <= 1e-10 * end * newton->load_unit.l2_norm()))
+      throw InputError(name,
+                       control
+                         + " control needs loads proportional to t "
+                           "(f(t) = t f(1))");
   }
 
 
@@ -338,7 +406,7 @@ namespace amfrac
             return report;
           }
         if (it == p.max_iterations || !std::isfinite(norm)
-            || stagnates(report.residuals, *interfaces, comm))
+            || stagnates(report.residuals, interfaces.get(), comm))
           return report;
         const double stiffness = pattern_derivative(solution);
         if (!solve_both_directions(solver, report))
@@ -358,6 +426,94 @@ namespace amfrac
         n.increment.add(dt, n.load_pattern);
         solution += n.increment;
         t += dt;
+      }
+  }
+
+
+
+  template <int dim>
+  typename Simulator<dim>::NewtonReport
+  Simulator<dim>::solve_arc_length_step(const double  t0,
+                                        double       &radius,
+                                        double       &t,
+                                        LinearSolver &solver)
+  {
+    // Unknowns (u, t) with the constraint |du|^2 + psi^2 q^2 dt^2 = l^2
+    // on the step from the converged state (Crisfield 1981). Each
+    // iteration solves K du_I = -r and K du_II = -dR/dt with one
+    // factorization; the correction du_I + x d (d = du_II with the
+    // prescribed part g(1)) keeps the constraint, x the root that
+    // continues the path.
+    NewtonState                       &n = *newton;
+    const parameters::NonlinearSolver &p = parameters.nonlinear_solver;
+    t                                    = t0;
+    solution                             = n.converged_solution;
+    Vector step(solution), base(solution), direction(solution);
+    step                = 0;
+    double       step_t = 0; // t - t0
+    double       psi2   = 0; // psi^2 q^2
+    NewtonReport report;
+    for (unsigned int it = 0;; ++it)
+      {
+        n.external_load = n.load_unit;
+        n.external_load *= t;
+        const double norm = update_residual(solution, &system_matrix);
+        report.residuals.push_back(norm);
+        const double length2 = step * step + psi2 * step_t * step_t;
+        if (it > 0 && norm <= p.tolerance * n.force_scale
+            && std::abs(length2 - radius * radius) <= 1e-8 * radius * radius)
+          {
+            report.converged = true;
+            return report;
+          }
+        if (it == p.max_iterations || !std::isfinite(norm)
+            || stagnates(report.residuals, interfaces.get(), comm))
+          return report;
+        pattern_derivative(solution);
+        if (!solve_both_directions(solver, report))
+          return report;
+        n.increment_constraints.distribute(n.increment);
+        direction = n.pattern_increment;
+        n.increment_constraints.distribute(direction);
+        direction += n.load_pattern;
+        const double dd = direction * direction;
+        if (n.arc_scale == 0)
+          {
+            // The first step of the run: q = |du/dt|, and the nominal
+            // length that of a nominal step of t.
+            n.arc_scale   = std::sqrt(dd);
+            n.arc_nominal = std::sqrt(1 + std::pow(p.arc_length_psi, 2))
+                            * n.arc_scale * parameters.time.end_time
+                            / parameters.time.n_steps;
+          }
+        if (radius == 0)
+          radius = n.arc_nominal;
+        psi2 = std::pow(p.arc_length_psi * n.arc_scale, 2);
+        // The predictor follows the previous step (the first: t grows);
+        // corrections stay closest to the step so far.
+        double preference = 1;
+        if (it == 0)
+          preference = n.arc_previous * direction < 0 ? -1 : 1;
+        else
+          preference = direction * step + psi2 * step_t;
+        base = step;
+        base += n.increment;
+        double x;
+        if (!arc_length_root(dd + psi2,
+                             2 * (base * direction + psi2 * step_t),
+                             base * base + psi2 * step_t * step_t
+                               - radius * radius,
+                             preference,
+                             x))
+          {
+            report.failure = "the arc-length constraint has no real root";
+            return report;
+          }
+        n.increment.add(x, direction);
+        step += n.increment;
+        solution += n.increment;
+        step_t += x;
+        t += x;
       }
   }
 
@@ -403,7 +559,7 @@ namespace amfrac
             return report;
           }
         if (it == p.max_iterations || !std::isfinite(norm)
-            || stagnates(report.residuals, *interfaces, comm))
+            || stagnates(report.residuals, interfaces.get(), comm))
           return report;
         pattern_derivative(solution);
         if (!solve_both_directions(solver, report))
@@ -503,7 +659,7 @@ namespace amfrac
         norm = best_norm;
         report.residuals.push_back(norm);
         if (!std::isfinite(norm)
-            || stagnates(report.residuals, *interfaces, comm))
+            || stagnates(report.residuals, interfaces.get(), comm))
           return report;
       }
     report.converged = converged();
@@ -532,9 +688,13 @@ namespace amfrac
     work += 0.5 * (load_sum * delta);
     n.external_work += work;
 
-    Vector Ku = solution;
-    n.bulk_unconstrained.vmult(Ku, solution);
-    const double strain_energy = 0.5 * (Ku * solution);
+    double strain_energy = n.strain_energy;
+    if (!finite_strain)
+      {
+        Vector Ku = solution;
+        n.bulk_unconstrained.vmult(Ku, solution);
+        strain_energy = 0.5 * (Ku * solution);
+      }
 
     std::vector<std::pair<std::string, double>> columns
       = {{"external_work", n.external_work}, {"strain_energy", strain_energy}};
@@ -593,11 +753,19 @@ namespace amfrac
     double                             t = 0, dt = nominal;
     unsigned int                       step = 0, total_iterations = 0;
     std::vector<unsigned int>          iterations;
+    const auto set_interface_time_step = [&](const double step_length) {
+      if (interfaces)
+        interfaces->set_time_step(step_length);
+    };
     // Dissipation control takes over when a displacement step dissipates
     // more than the target or cannot converge (a snap-back), and hands
     // back when the structure stores rather than dissipates.
     if (p.dissipation_control)
-      setup_dissipation_control();
+      setup_load_pattern(false, "dissipation or opening");
+    if (p.arc_length)
+      setup_load_pattern(true, "arc-length");
+    // Arc-length: the step length (0: nominal, set by the first step).
+    double     arc      = 0;
     const bool adaptive = parameters.adaptivity.during_history();
     if (adaptive && !restart)
       adapt_during_history(0, 0.);
@@ -617,24 +785,47 @@ namespace amfrac
         t                   = progress.t;
         dt                  = progress.dt;
         dtau                = progress.dtau;
-        step                = progress.step;
-        total_iterations    = progress.total_iterations;
-        by_dissipation      = progress.by_dissipation;
-        iterations          = progress.iterations;
+        if (p.arc_length)
+          arc = progress.dtau;
+        step             = progress.step;
+        total_iterations = progress.total_iterations;
+        by_dissipation   = progress.by_dissipation;
+        iterations       = progress.iterations;
       }
     const auto save = [&](CheckpointData &run, CheckpointData &part) {
-      save_newton(
-        {t, dt, dtau, step, total_iterations, by_dissipation, iterations},
-        run,
-        part);
+      // Arc-length keeps its step length where dissipation control keeps
+      // its increment.
+      save_newton({t,
+                   dt,
+                   p.arc_length ? arc : dtau,
+                   step,
+                   total_iterations,
+                   by_dissipation,
+                   iterations},
+                  run,
+                  part);
     };
     while (t < end * (1 - 1e-12))
       {
+        if (p.arc_length && step >= p.max_arc_length_steps)
+          {
+            pcout << "  arc-length: stopped after " << step
+                  << " steps (Nonlinear solver/Maximum arc-length steps) "
+                     "at t="
+                  << t << ", before End time" << std::endl;
+            break;
+          }
         double       trial_t = t;
         NewtonReport report;
-        if (by_dissipation)
+        if (p.arc_length)
           {
-            interfaces->set_time_step(nominal);
+            arc = arc == 0 ? newton->arc_nominal : arc;
+            set_interface_time_step(nominal);
+            report = solve_arc_length_step(t, arc, trial_t, solver);
+          }
+        else if (by_dissipation)
+          {
+            set_interface_time_step(nominal);
             report = p.opening_control ?
                        solve_opening_step(t, dtau, trial_t, solver) :
                        solve_dissipation_step(t, dtau, trial_t, solver);
@@ -654,14 +845,14 @@ namespace amfrac
                       << residual_list(report.residuals)
                       << "; trying a displacement step" << std::endl;
                 trial_t = std::min(t + dt, end);
-                interfaces->set_time_step(trial_t - t);
+                set_interface_time_step(trial_t - t);
                 report = solve_newton_step(trial_t, solver);
               }
           }
         else
           {
             trial_t = std::min(t + dt, end);
-            interfaces->set_time_step(trial_t - t);
+            set_interface_time_step(trial_t - t);
             report = solve_newton_step(trial_t, solver);
           }
         if (!report.converged)
@@ -678,9 +869,19 @@ namespace amfrac
             dt *= 0.5;
             if (by_dissipation)
               dtau *= 0.5;
+            if (p.arc_length)
+              {
+                // The minimum step is a fraction of the nominal length.
+                arc *= 0.5;
+                dt = newton->arc_nominal > 0 ?
+                       arc / newton->arc_nominal * nominal :
+                       0.5 * dt;
+              }
             std::ostringstream line;
             line << "  t=" << trial_t << ": Newton did not converge"
                  << residual_list(report.residuals);
+            if (p.arc_length)
+              line << "; arc length cut to " << arc << " mm, i.e.";
             pcout << line.str() << " (force scale " << newton->force_scale
                   << "); step cut to " << dt
                   << (by_dissipation ? " (and the " + control + " increment to "
@@ -714,7 +915,8 @@ namespace amfrac
               }
             continue;
           }
-        interfaces->commit();
+        if (interfaces)
+          interfaces->commit();
         const unsigned int its = report.residuals.size() - 1;
         iterations.push_back(its);
         total_iterations += its;
@@ -735,8 +937,13 @@ namespace amfrac
             by_dissipation = true;
             dtau           = target;
           }
-        newton->converged_force    = force;
-        const auto columns         = energy_ledger();
+        newton->converged_force = force;
+        const auto columns      = energy_ledger();
+        if (p.arc_length)
+          {
+            newton->arc_previous = solution;
+            newton->arc_previous -= newton->converged_solution;
+          }
         newton->converged_solution = solution;
         t                          = trial_t;
         auto row                   = columns;
@@ -748,6 +955,7 @@ namespace amfrac
           {
             dtau = std::min(2 * dtau, target);
             dt   = std::min(2 * dt, nominal);
+            arc  = std::min(2 * arc, newton->arc_nominal);
           }
         checkpoint_after_step(step, step, true, t >= end * (1 - 1e-12), save);
       }

@@ -32,6 +32,9 @@ namespace amfrac
     make_laminate_mesh(parameters.geometry, laminate, triangulation);
     if (!parameters.cohesive.interfaces.empty())
       interfaces = std::make_unique<CohesiveInterfaces<dim>>(prm.cohesive);
+    if (parameters.total_lagrangian)
+      finite_strain
+        = std::make_unique<TotalLagrangianAssembler<dim>>(dof_layer, plies);
     dof_layer.distribute(interfaces ? interfaces->released_faces() :
                                       typename TiedCopyDoFs<dim>::FaceFilter());
     // The lever couples distant nodes: every rank sees all of them.
@@ -48,6 +51,8 @@ namespace amfrac
                 << std::endl;
       }
     build_loads_and_supports();
+    if (parameters.geometry.imperfection_mode > 0)
+      seed_imperfection_from_mode();
 
     make_probe();
     summary
@@ -381,7 +386,7 @@ namespace amfrac
     // Refinement cycles repeat the whole run per mesh: they neither
     // checkpoint nor resume (the parameters refuse Every n steps there).
     const bool resumable = parameters.time.explicit_dynamics || interfaces
-                           || !parameters.adaptivity.active();
+                           || finite_strain || !parameters.adaptivity.active();
     if (restart && !resumable)
       throw InputError("Adaptivity/Refinement cycles",
                        "a run with refinement cycles cannot resume from a "
@@ -400,6 +405,8 @@ namespace amfrac
           << ", " << laminate.n_plies() << " plies, ";
     if (interfaces)
       pcout << interfaces->interfaces().size() << " cohesive interface(s), ";
+    if (finite_strain)
+      pcout << "total Lagrangian, ";
     pcout << triangulation.n_active_cells() << " cells, " << dof_layer.n_dofs()
           << " unknowns (" << dof_layer.n_copies() << " node copies), Q"
           << dof_layer.get_fe().degree << ", "
@@ -420,7 +427,7 @@ namespace amfrac
       }
     if (parameters.time.explicit_dynamics)
       run_explicit();
-    else if (interfaces)
+    else if (interfaces || finite_strain)
       run_newton();
     else if (parameters.adaptivity.active())
       run_adaptive();

@@ -381,6 +381,55 @@ subsection Adaptivity
   set Refine every = 5
 end"
 
+# Total Lagrangian kinematics: what it cannot take yet, and imperfections.
+expect tl_explicit "Kinematics" "$base
+set Kinematics = total Lagrangian
+subsection Time
+  set Time integration = explicit
+end"
+expect tl_buckling "Buckling/Number of modes" "$base
+set Kinematics = total Lagrangian
+subsection Buckling
+  set Number of modes = 1
+end"
+expect tl_dissipation "Nonlinear solver/Control" "$base
+set Kinematics = total Lagrangian
+subsection Nonlinear solver
+  set Control = dissipation
+end"
+expect imperfection_syntax "Geometry/Imperfection" "$(with 'set Elements along width = 2' 'set Imperfection = 0; 0; sin(')"
+expect imperfection_nan "Geometry/Imperfection" "$(with 'set Elements along width = 2' 'set Imperfection = 0; 0; sqrt(x-1)')"
+expect imperfection_count "Geometry/Imperfection" "$(with 'set Elements along width = 2' 'set Imperfection = 0; 0')"
+
+expect arc_length_linear "Nonlinear solver/Control" "$base
+subsection Nonlinear solver
+  set Control = arc-length
+end"
+expect arc_length_not_proportional "proportional to t" "$base
+set Kinematics = total Lagrangian
+subsection Boundary conditions
+  subsection x-
+    set Type = displacement
+  end
+  subsection z+
+    set Type = traction
+    set Traction = 0; 0; -1-t
+  end
+end
+subsection Nonlinear solver
+  set Control = arc-length
+end"
+
+expect imperfection_mode_amplitude "Geometry/Imperfection amplitude" "$(with 'set Elements along width = 2' 'set Imperfection mode = 1')"
+expect imperfection_mode_explicit "Geometry/Imperfection mode" "$base
+subsection Geometry
+  set Imperfection mode      = 1
+  set Imperfection amplitude = 0.1
+end
+subsection Time
+  set Time integration = explicit
+end"
+
 # A missing file and an unknown option.
 "$amfrac" no_such_file.prm > /dev/null 2> missing.stderr
 status=$?

@@ -38,6 +38,14 @@ namespace amfrac
       double       hole_radius;
       std::string  refinement_region;
       unsigned int region_refinements;
+      /** A displacement of the mesh's vertices (dim expressions of x, y,
+       * [z]; empty: none): a geometric imperfection. */
+      std::string imperfection;
+      /** The mode (1: the lowest) of the linear buckling analysis of the
+       * small-strain state at End time added to the vertices, scaled to a
+       * largest displacement of imperfection_amplitude (0: none). */
+      unsigned int imperfection_mode;
+      double       imperfection_amplitude;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -294,6 +302,11 @@ namespace amfrac
        * points (opening_increment) instead of the dissipated energy. */
       bool   opening_control = false;
       double opening_increment;
+      /** Control = arc-length: Crisfield's method from the first step,
+       * with the load parameter's weight psi and a step limit. */
+      bool         arc_length = false;
+      double       arc_length_psi;
+      unsigned int max_arc_length_steps;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -408,7 +421,10 @@ namespace amfrac
     /** All parameters of a run. */
     struct Parameters
     {
-      unsigned int       dimension;
+      unsigned int dimension;
+      /** Kinematics = total Lagrangian: Green-Lagrange strain and St
+       * Venant-Kirchhoff plies on the Newton path; false: small strain. */
+      bool               total_lagrangian;
       Geometry           geometry;
       Materials          materials;
       Discretization     discretization;
@@ -444,6 +460,12 @@ namespace amfrac
       /** Inputs a linear buckling analysis cannot take (InputError). */
       void
       check_buckling_input() const;
+      /** Inputs total Lagrangian kinematics cannot take yet (InputError). */
+      void
+      check_kinematics_input() const;
+      /** Scenes arc-length control cannot follow (InputError). */
+      void
+      check_arc_length_input() const;
     };
 
     /** Split "a; b; c" into trimmed expressions. */

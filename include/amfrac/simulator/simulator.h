@@ -4,6 +4,7 @@
 #include <amfrac/assembly/elastic_assembler.h>
 #include <amfrac/assembly/lever.h>
 #include <amfrac/assembly/loads.h>
+#include <amfrac/assembly/total_lagrangian.h>
 #include <amfrac/checkpoint/checkpoint_store.h>
 #include <amfrac/cohesive/interface_assembler.h>
 #include <amfrac/dofs/tied_copy_dofs.h>
@@ -14,6 +15,7 @@
 #include <amfrac/postprocess/history.h>
 #include <amfrac/postprocess/interface_output.h>
 #include <amfrac/postprocess/point_probe.h>
+#include <amfrac/solvers/buckling_eigensolver.h>
 #include <amfrac/solvers/linear_solver.h>
 #include <array>
 #include <deal.II/base/conditional_ostream.h>
@@ -176,8 +178,10 @@ namespace amfrac
     std::vector<PlyProperties<dim>>      plies;
     TiedCopyDoFs<dim>                    dof_layer;
     ElasticAssembler<dim>                assembler;
-    Loads<dim>                           loads;
-    double                               estimated_stable_step = 0;
+    /** Kinematics = total Lagrangian (nullptr: small strain). */
+    std::unique_ptr<TotalLagrangianAssembler<dim>> finite_strain;
+    Loads<dim>                                     loads;
+    double                                         estimated_stable_step = 0;
     /** Explicit mass scaling: the added mass [t] and the uniform factor
      * of all masses (1: none). */
     double                                   added_mass          = 0;
@@ -206,11 +210,17 @@ namespace amfrac
     {
       /** The supports and hanging nodes with zero values: the constraints
        * of a Newton increment. */
-      AffineConstraints<double>      increment_constraints;
+      AffineConstraints<double> increment_constraints;
+      /** Small strain: the bulk stiffness, condensed and unconstrained.
+       * Total Lagrangian: only the unconstrained tangent of the last
+       * state update_residual() assembled a tangent for. */
       TrilinosWrappers::SparseMatrix bulk_condensed;
       TrilinosWrappers::SparseMatrix bulk_unconstrained;
-      Vector                         converged_solution;
-      Vector                         external_load;
+      /** Total Lagrangian: the strain energy of the last update_residual()
+       * state. */
+      double strain_energy = 0;
+      Vector converged_solution;
+      Vector external_load;
       /** K u + F_interfaces(u) - f: its entries on supports are reactions. */
       Vector residual;
       Vector condensed_residual;
@@ -231,6 +241,16 @@ namespace amfrac
       Vector pattern_condensed;
       Vector pattern_increment;
       double converged_force = 0;
+      /** Path following with loads (arc-length): the loads at t = 1 (they
+       * are proportional to t); zero without loads. */
+      Vector load_unit;
+      /** Arc-length: the displacement increment of the last converged
+       * step (the direction the path continues in), |du/dt| of the first
+       * step (q, the load parameter's scale) and the nominal step
+       * length (that of a nominal step of t on the first step). */
+      Vector arc_previous;
+      double arc_scale   = 0;
+      double arc_nominal = 0;
     };
     /** Adaptivity: the current cycle, the estimate of its last step
      * (the marking criterion), its zz estimate (reported), the last
@@ -358,6 +378,20 @@ namespace amfrac
 
     void
     build_loads_and_supports();
+    /** Geometry/Imperfection mode: the linear buckling mode of the
+     * small-strain state at End time, scaled, added to the vertices of the
+     * initial mesh, and everything that depends on them rebuilt (nothing
+     * is written). */
+    void
+    seed_imperfection_from_mode();
+    /** The lowest @p n_modes buckling modes of the small-strain state at
+     * @p t (load factors and modes, positive factors only). */
+    BucklingEigensolver::Result
+    small_strain_buckling(const double t, const unsigned int n_modes);
+    /** Move every vertex by @p displacement (all reduced dofs on this
+     * rank): the mean of the values of its cells. */
+    void
+    move_vertices(const Vector &displacement);
     void
     make_probe();
     /** Refinement cycles of a linear scene (Adaptivity subsection). */
@@ -513,8 +547,13 @@ namespace amfrac
      * pattern_condensed; returns pattern . K_T pattern. */
     double
     pattern_derivative(const Vector &state);
+    /** The path-following patterns: the prescribed displacements at
+     * t = 1 (load_pattern) and, if @p with_loads, the loads at t = 1
+     * (load_unit); both must be proportional to t (InputError naming
+     * @p control otherwise), and without @p with_loads there must be no
+     * loads. */
     void
-    setup_dissipation_control();
+    setup_load_pattern(const bool with_loads, const std::string &control);
     /** K_T(relevant_solution) @p direction, unconstrained. */
     void
     tangent_product(const Vector &direction, Vector &product);
@@ -531,6 +570,14 @@ namespace amfrac
      * reason in @p report, if the linear solver failed. */
     bool
     solve_both_directions(LinearSolver &solver, NewtonReport &report);
+    /** One step of Crisfield's arc-length method of length @p radius
+     * from the converged state at @p t0 (0: the nominal length, set
+     * here); the new load parameter goes to @p t. */
+    NewtonReport
+    solve_arc_length_step(const double  t0,
+                          double       &radius,
+                          double       &t,
+                          LinearSolver &solver);
     /** One step of opening control: the summed normal opening of the
      * bonded interface points grows by @p increment. */
     NewtonReport

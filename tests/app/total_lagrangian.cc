@@ -1,0 +1,163 @@
+// Kinematics = total Lagrangian on the Newton path.
+//   rotation <euler_strip_2d.prm>: one end of the strip turned by 90
+//     degrees as a rigid body, the rest free: the whole strip turns rigidly
+//     (every probe on R X - X), no strain energy, no reaction; in 2D and in
+//     3D (a [0/90] plate with a cohesive interface between the plies). With
+//     small strains the same motion stores a large strain energy, which the
+//     test also checks (it is what the test could catch).
+//   euler <euler_strip_2d.prm>: the clamped strip with a first-mode
+//     imperfection w0 bends over at the critical force N_1 of the linear
+//     buckling analysis of the same mesh: past the bifurcation N follows the
+//     imperfect Euler column N = N_1 (1 - w0 / w) (w the total mid-span
+//     deflection) to 0.5 %, never exceeds N_1, and the work done equals the
+//     strain energy.
+//   euler_mode <euler_strip_2d.prm>: the same with the imperfection seeded
+//     from the computed first buckling mode (Geometry/Imperfection mode).
+#include "scene.h"
+
+#include <cmath>
+
+using namespace amfrac;
+
+namespace
+{
+  constexpr double pi = 3.14159265358979323846;
+
+  /** A rigid rotation by t pi/2 of face x- about the width axis, x+ free. */
+  template <int dim>
+  std::string
+  rotation_scene(const std::string &kinematics)
+  {
+    const std::string  z = dim == 2 ? "y" : "z";
+    const std::string  a = "(t*pi/2)";
+    std::ostringstream text;
+    text << "set Dimension = " << dim << "\nset Kinematics = " << kinematics
+         << "\nsubsection Geometry\n set Imperfection =\n"
+         << " set Length = 20\n set Elements along length = 10\n";
+    if (dim == 3)
+      text << " set Stacking sequence = [0/90]\n set Width = 4\n"
+              " set Elements along width = 2\nend\n"
+              "subsection Cohesive interfaces\n set Interfaces = all\nend\n";
+    else
+      text << "end\n";
+    text << "subsection Boundary conditions\n subsection x-\n"
+            "  set Type = displacement\n  set Components = "
+         << (dim == 2 ? "x, y" : "x, y, z") << "\n  set Displacement = (cos"
+         << a << "-1)*x + sin" << a << "*" << z << "; "
+         << (dim == 3 ? "0; " : "") << "-sin" << a << "*x + (cos" << a << "-1)*"
+         << z
+         << "\n end\n subsection x+\n  set Type = free\n end\nend\n"
+            "subsection Time\n set Number of steps = 16\nend\n"
+            "subsection Output\n set Field format = none\n"
+            " set Point values = 20, "
+         << (dim == 3 ? "4, 0.5" : "0.5") << "\nend\n";
+    return text.str();
+  }
+
+  template <int dim>
+  double
+  rigid_rotation(const std::string &file, const std::string &kinematics)
+  {
+    const auto simulator
+      = amfrac_test::run_scene<dim>(file, rotation_scene<dim>(kinematics));
+    const History    &history = simulator->history();
+    const std::size_t last    = history.n_rows() - 1;
+    const double      energy  = history.value(last, "strain_energy");
+    std::cout << "  " << dim << "D, " << kinematics
+              << ": strain energy after 90 degrees " << energy << " N mm"
+              << std::endl;
+    if (kinematics == "small strain")
+      return energy;
+    // The probe at (20, [4,] 0.5) goes to R X.
+    const std::string z = dim == 2 ? "p0_uy" : "p0_uz";
+    // To the Newton tolerance (relative to the first residual of a step:
+    // a rigid motion has no force scale).
+    CHECK_CLOSE(history.value(last, "p0_ux"), -20 + 0.5, 1e-5);
+    CHECK_CLOSE(history.value(last, z), -20 - 0.5, 1e-5);
+    CHECK(std::abs(energy) < 1e-9);
+    for (const std::string component : {"x", "y", "z"})
+      if (component != "z" || dim == 3)
+        CHECK(std::abs(history.value(last, "reaction_x-_" + component)) < 1e-6);
+    return energy;
+  }
+
+  void
+  rotation(const std::string &file)
+  {
+    rigid_rotation<2>(file, "total Lagrangian");
+    rigid_rotation<3>(file, "total Lagrangian");
+    // Small strains see the rotation as a strain of order one.
+    CHECK(rigid_rotation<2>(file, "small strain") > 1e3);
+  }
+
+  /** The strip of @p file with @p imperfection appended. */
+  void
+  euler(const std::string &file, const std::string &imperfection)
+  {
+    // N_1 of the perfect strip on the same mesh.
+    const auto linear = amfrac_test::run_scene<2>(
+      file,
+      "set Kinematics = small strain\nsubsection Geometry\n"
+      " set Imperfection =\nend\nsubsection Time\n set Number of steps = 1\n"
+      "end\nsubsection Buckling\n set Number of modes = 1\nend\n"
+      "subsection Output\n set Field format = none\nend\n");
+    const double N_1
+      = -linear->buckling_history()->value(0, "critical_reaction_x+_x");
+
+    const auto simulator = amfrac_test::run_scene<2>(
+      file,
+      imperfection + "subsection Output\n set Field format = none\nend\n");
+    const History &history = simulator->history();
+    const double   w0      = 0.01; // the imperfection at mid-span
+    double         largest = 0;
+    unsigned int   past    = 0;
+    for (std::size_t r = 0; r < history.n_rows(); ++r)
+      {
+        const double N = -history.value(r, "reaction_x+_x");
+        const double w = w0 + history.value(r, "p0_uy");
+        largest        = std::max(largest, N);
+        if (w > 10 * w0)
+          {
+            ++past;
+            CHECK_CLOSE(N / (N_1 * (1 - w0 / w)), 1., 5e-3);
+          }
+        CHECK(std::abs(history.value(r, "balance_error"))
+              < 1e-3 * history.value(r, "strain_energy"));
+      }
+    const std::size_t last = history.n_rows() - 1;
+    std::cout << "  N_1 = " << N_1 << " N/mm; largest N = " << largest
+              << ", at the end N = " << -history.value(last, "reaction_x+_x")
+              << " with w = " << w0 + history.value(last, "p0_uy") << " mm; "
+              << past << " steps past w = 10 w0" << std::endl;
+    CHECK(largest < N_1);
+    CHECK(largest > 0.99 * N_1);
+    CHECK(past >= 10);
+    CHECK(history.value(last, "p0_uy") > 1.);
+  }
+} // namespace
+
+int
+main(int argc, char *argv[])
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const std::string                what = argc > 2 ? argv[1] : "";
+  if (what == "rotation")
+    rotation(argv[2]);
+  else if (what == "euler")
+    euler(argv[2], "");
+  else if (what == "euler_mode")
+    // The first buckling mode instead of its formula, with the same
+    // largest displacement.
+    euler(argv[2],
+          "subsection Geometry\n set Imperfection =\n"
+          " set Imperfection mode = 1\n"
+          " set Imperfection amplitude = 0.01\nend\n");
+  else
+    {
+      std::cerr << "usage: app_total_lagrangian rotation|euler|euler_mode "
+                   "FILE.prm"
+                << std::endl;
+      return 1;
+    }
+  return amfrac_test::failures;
+}
