@@ -201,6 +201,15 @@ namespace amfrac
   Simulator<dim>::setup_after_refinement()
   {
     TimerOutput::Scope scope(timer, "setup");
+    rebuild_after_mesh_change();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::rebuild_after_mesh_change()
+  {
     dof_layer.distribute(interfaces ? interfaces->released_faces() :
                                       typename TiedCopyDoFs<dim>::FaceFilter());
     lever.collect(dof_layer);

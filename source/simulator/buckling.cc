@@ -73,13 +73,31 @@ namespace amfrac
     make_constraints(t, fixed, false);
     const IndexSet &owned = dof_layer.locally_owned_dofs();
     Vector          state(owned, comm), rhs(owned, comm);
-    assembler.reinit_matrix(fixed, K);
+    const IndexSet &relevant = dof_layer.locally_relevant_dofs();
+    {
+      TrilinosWrappers::SparsityPattern pattern(owned, owned, relevant, comm);
+      assembler.add_couplings(fixed, pattern);
+      if (interfaces)
+        interfaces->add_couplings(fixed, pattern);
+      pattern.compress();
+      K.reinit(pattern);
+    }
     assembler.assemble_matrix(fixed, K);
+    if (interfaces)
+      {
+        // The interface tangent at zero displacement: bonded points and
+        // open pre-cracks. Both copies of a supported node carry the same
+        // prescribed value, so the interfaces add nothing to the load.
+        Vector zero(owned, relevant, comm), force;
+        force.reinit(owned, relevant, comm, true);
+        interfaces->assemble(zero, force, fixed, &K);
+        K.compress(VectorOperation::add);
+      }
     solver.initialize(K, rigid_body_modes(), dim, owned_node_coordinates());
     assembler.assemble_rhs(loads, t, fixed, rhs);
     solver.solve(state, rhs);
     fixed.distribute(state);
-    Vector ghosted(owned, dof_layer.locally_relevant_dofs(), comm);
+    Vector ghosted(owned, relevant, comm);
     ghosted = state;
     assembler.reinit_matrix(fixed, geometric);
     assembler.assemble_geometric_matrix(ghosted, fixed, geometric);
@@ -142,7 +160,7 @@ namespace amfrac
           << " of the small-strain state at t=" << t << " (load factor "
           << result.load_factors[k - 1] << "), largest displacement "
           << parameters.geometry.imperfection_amplitude << " mm" << std::endl;
-    setup_after_refinement();
+    rebuild_after_mesh_change();
     if (interfaces)
       interfaces->setup(dof_layer, parameters.boundary_conditions.constants);
   }

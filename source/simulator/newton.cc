@@ -432,6 +432,25 @@ namespace amfrac
 
 
   template <int dim>
+  bool
+  Simulator<dim>::path_directions(LinearSolver &solver,
+                                  NewtonReport &report,
+                                  Vector       &direction)
+  {
+    NewtonState &n = *newton;
+    pattern_derivative(solution);
+    if (!solve_both_directions(solver, report))
+      return false;
+    n.increment_constraints.distribute(n.increment);
+    direction = n.pattern_increment;
+    n.increment_constraints.distribute(direction);
+    direction += n.load_pattern;
+    return true;
+  }
+
+
+
+  template <int dim>
   typename Simulator<dim>::NewtonReport
   Simulator<dim>::solve_arc_length_step(const double  t0,
                                         double       &radius,
@@ -467,15 +486,9 @@ namespace amfrac
             return report;
           }
         if (it == p.max_iterations || !std::isfinite(norm)
-            || stagnates(report.residuals, interfaces.get(), comm))
+            || stagnates(report.residuals, interfaces.get(), comm)
+            || !path_directions(solver, report, direction))
           return report;
-        pattern_derivative(solution);
-        if (!solve_both_directions(solver, report))
-          return report;
-        n.increment_constraints.distribute(n.increment);
-        direction = n.pattern_increment;
-        n.increment_constraints.distribute(direction);
-        direction += n.load_pattern;
         const double dd = direction * direction;
         if (n.arc_scale == 0)
           {
@@ -559,15 +572,9 @@ namespace amfrac
             return report;
           }
         if (it == p.max_iterations || !std::isfinite(norm)
-            || stagnates(report.residuals, interfaces.get(), comm))
+            || stagnates(report.residuals, interfaces.get(), comm)
+            || !path_directions(solver, report, direction))
           return report;
-        pattern_derivative(solution);
-        if (!solve_both_directions(solver, report))
-          return report;
-        n.increment_constraints.distribute(n.increment);
-        direction = n.pattern_increment;
-        n.increment_constraints.distribute(direction);
-        direction += n.load_pattern;
         const double slope = a * direction;
         if (!(std::abs(slope) > 0))
           return report;

@@ -13,6 +13,10 @@
 //     strain energy.
 //   euler_mode <euler_strip_2d.prm>: the same with the imperfection seeded
 //     from the computed first buckling mode (Geometry/Imperfection mode).
+//   panel <delaminated_panel.prm>: the seed's panel with total Lagrangian
+//     kinematics and contact: local buckling of the sublaminate where the
+//     linear analysis' load and the imperfection put it, then global
+//     bending, no delamination growth up to the scene's end.
 #include "scene.h"
 
 #include <cmath>
@@ -134,6 +138,40 @@ namespace
     CHECK(past >= 10);
     CHECK(history.value(last, "p0_uy") > 1.);
   }
+  /** The delaminated panel: the sublaminate's deflection passes ten times
+   * the imperfection across 0.9 times the linear analysis' 185.4 N/mm,
+   * then the base bends the other way, the delamination not grown. */
+  void
+  panel(const std::string &file)
+  {
+    const auto simulator = amfrac_test::run_scene<2>(
+      file, "subsection Output\n set Field format = none\nend\n");
+    const History &history = simulator->history();
+    const double   initial = history.value(0, "debonded_i15");
+    double         before = 0, after = 1e300;
+    for (std::size_t r = 0; r < history.n_rows(); ++r)
+      {
+        const double N = -history.value(r, "reaction_x+_x");
+        const double w = history.value(r, "p0_uy");
+        // Up to 10 times the imperfection: not yet buckled.
+        if (w < 0.05)
+          before = std::max(before, N);
+        else
+          after = std::min(after, N);
+        CHECK_CLOSE(history.value(r, "debonded_i15"), initial, 1e-9);
+      }
+    const std::size_t last = history.n_rows() - 1;
+    std::cout << "  local buckling between " << before << " and " << after
+              << " N/mm; at the end N = "
+              << -history.value(last, "reaction_x+_x") << " N/mm, deflections "
+              << history.value(last, "p0_uy") << " and "
+              << history.value(last, "p1_uy") << " mm" << std::endl;
+    // With a mode-shaped imperfection w0, w / w0 = 1 / (1 - N / N_cr)
+    // before buckling: ten times w0 at 0.9 N_cr (167 N/mm).
+    CHECK(before < 0.9 * 185.4 && after > 0.9 * 185.4 && after < 185.4);
+    CHECK(history.value(last, "p0_uy") > 1.);
+    CHECK(history.value(last, "p1_uy") < -0.5);
+  }
 } // namespace
 
 int
@@ -145,6 +183,8 @@ main(int argc, char *argv[])
     rotation(argv[2]);
   else if (what == "euler")
     euler(argv[2], "");
+  else if (what == "panel")
+    panel(argv[2]);
   else if (what == "euler_mode")
     // The first buckling mode instead of its formula, with the same
     // largest displacement.
@@ -154,9 +194,10 @@ main(int argc, char *argv[])
           " set Imperfection amplitude = 0.01\nend\n");
   else
     {
-      std::cerr << "usage: app_total_lagrangian rotation|euler|euler_mode "
-                   "FILE.prm"
-                << std::endl;
+      std::cerr
+        << "usage: app_total_lagrangian rotation|euler|euler_mode|panel "
+           "FILE.prm"
+        << std::endl;
       return 1;
     }
   return amfrac_test::failures;

@@ -448,6 +448,9 @@ namespace amfrac
     /** Rebuild everything that depends on the mesh. */
     void
     setup_after_refinement();
+    /** The same without the timer section (inside the constructor's). */
+    void
+    rebuild_after_mesh_change();
     /** One row of adaptivity.csv and its console line. */
     void
     report_cycle();
@@ -570,6 +573,16 @@ namespace amfrac
      * reason in @p report, if the linear solver failed. */
     bool
     solve_both_directions(LinearSolver &solver, NewtonReport &report);
+    /** The two directions of a path-following iteration at solution
+     * (solve_both_directions() after pattern_derivative()): the increment
+     * K du_I = -r with its constraints distributed, and into @p direction
+     * the change of the solution per unit t, du_II with the prescribed
+     * part g(1). False, with the reason in @p report, if the linear solver
+     * failed. */
+    bool
+    path_directions(LinearSolver &solver,
+                    NewtonReport &report,
+                    Vector       &direction);
     /** One step of Crisfield's arc-length method of length @p radius
      * from the converged state at @p t0 (0: the nominal length, set
      * here); the new load parameter goes to @p t. */
