@@ -66,8 +66,8 @@ namespace amfrac
                                         const unsigned int n_modes)
   {
     TimerOutput::Scope scope(timer, "buckling");
-    // The matrices outlive the solver, whose factorization refers to K.
-    TrilinosWrappers::SparseMatrix K, geometric;
+    // K outlives the solver, whose factorization refers to it.
+    TrilinosWrappers::SparseMatrix K;
     LinearSolver                   solver(parameters.linear_solver);
     AffineConstraints<double>      fixed;
     make_constraints(t, fixed, false);
@@ -99,14 +99,30 @@ namespace amfrac
     fixed.distribute(state);
     Vector ghosted(owned, relevant, comm);
     ghosted = state;
-    assembler.reinit_matrix(fixed, geometric);
-    assembler.assemble_geometric_matrix(ghosted, fixed, geometric);
     BucklingEigensolver::Settings settings;
     settings.n_modes        = n_modes;
     settings.block_size     = std::min(std::max(n_modes, 1u), 2u);
     settings.tolerance      = parameters.buckling.tolerance;
     settings.max_basis_size = std::max(parameters.buckling.max_basis_size,
                                        n_modes + 2 * settings.block_size);
+    return buckling_eigenpairs(solver, K, fixed, ghosted, settings);
+  }
+
+
+
+  template <int dim>
+  BucklingEigensolver::Result
+  Simulator<dim>::buckling_eigenpairs(
+    LinearSolver                         &solver,
+    const TrilinosWrappers::SparseMatrix &K,
+    const AffineConstraints<double>      &fixed,
+    const Vector                         &state,
+    const BucklingEigensolver::Settings  &settings)
+  {
+    TrilinosWrappers::SparseMatrix geometric;
+    assembler.reinit_matrix(fixed, geometric);
+    assembler.assemble_geometric_matrix(state, fixed, geometric);
+    // The eigensolver checks its own residuals.
     solver.set_check_residual(false);
     return BucklingEigensolver(settings).solve(
       [&](std::vector<Vector> &x, const std::vector<Vector> &b) {
@@ -115,7 +131,7 @@ namespace amfrac
       K,
       geometric,
       [&](const types::global_dof_index i) { return !fixed.is_constrained(i); },
-      state);
+      Vector(dof_layer.locally_owned_dofs(), comm));
   }
 
 
@@ -208,27 +224,16 @@ namespace amfrac
                                    const AffineConstraints<double> &fixed,
                                    const double                     t)
   {
-    TimerOutput::Scope             scope(timer, "buckling");
-    Timer                          watch;
-    TrilinosWrappers::SparseMatrix geometric;
-    assembler.reinit_matrix(fixed, geometric);
-    assembler.assemble_geometric_matrix(relevant_solution, fixed, geometric);
+    TimerOutput::Scope            scope(timer, "buckling");
+    Timer                         watch;
     const auto                   &b = parameters.buckling;
     BucklingEigensolver::Settings settings;
     settings.n_modes        = b.n_modes;
     settings.block_size     = b.block_size;
     settings.tolerance      = b.tolerance;
     settings.max_basis_size = b.max_basis_size;
-    // The eigensolver checks its own residuals.
-    solver.set_check_residual(false);
-    const auto result = BucklingEigensolver(settings).solve(
-      [&](std::vector<Vector> &x, const std::vector<Vector> &rhs) {
-        solver.solve(x, rhs);
-      },
-      system_matrix,
-      geometric,
-      [&](const types::global_dof_index i) { return !fixed.is_constrained(i); },
-      solution);
+    const auto result       = buckling_eigenpairs(
+      solver, system_matrix, fixed, relevant_solution, settings);
     pcout << "  buckling: " << result.load_factors.size()
           << " positive load factor(s) from " << result.n_solves << " solves, "
           << watch.wall_time() << " s" << std::endl;

@@ -388,6 +388,15 @@ namespace amfrac
      * @p t (load factors and modes, positive factors only). */
     BucklingEigensolver::Result
     small_strain_buckling(const double t, const unsigned int n_modes);
+    /** The lowest positive load factors and modes of (K + lambda K_G) v
+     * = 0 with K_G of the stress of @p state (ghosted), K factorized in
+     * @p solver, the rows @p fixed constrains left out. */
+    BucklingEigensolver::Result
+    buckling_eigenpairs(LinearSolver                         &solver,
+                        const TrilinosWrappers::SparseMatrix &K,
+                        const AffineConstraints<double>      &fixed,
+                        const Vector                         &state,
+                        const BucklingEigensolver::Settings  &settings);
     /** Move every vertex by @p displacement (all reduced dofs on this
      * rank): the mean of the values of its cells. */
     void
