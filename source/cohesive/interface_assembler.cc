@@ -127,7 +127,7 @@ namespace amfrac
   CohesiveInterfaces<dim>::released_faces() const
   {
     return [this](const CellIterator &cell, const unsigned int face) {
-      return is_cohesive(cell, face);
+      return is_cohesive(cell, face) || is_crack(cell, face);
     };
   }
 
@@ -174,11 +174,13 @@ namespace amfrac
     element.cell        = cell->id();
     element.face        = face;
     element.box         = coarse_cell_box<dim>(cell);
-    element.interface   = std::lower_bound(data.interfaces.begin(),
-                                         data.interfaces.end(),
-                                         std::min(cell->material_id(),
-                                                  neighbor->material_id()))
-                        - data.interfaces.begin();
+    element.interface   = is_crack(cell, face) ?
+                            data.interfaces.size() :
+                            std::lower_bound(data.interfaces.begin(),
+                                           data.interfaces.end(),
+                                           std::min(cell->material_id(),
+                                                    neighbor->material_id()))
+                            - data.interfaces.begin();
     std::vector<types::global_dof_index> lower_dofs(fe.n_dofs_per_cell()),
       upper_dofs(fe.n_dofs_per_cell());
     dofs.get_dof_indices(cell, lower_dofs);
@@ -239,24 +241,7 @@ namespace amfrac
                                  const std::string       &constants)
   {
     check_conforming(dofs.copy_handler());
-    elements.clear();
-    const unsigned int n_nodes = dofs.get_fe().degree + 1;
-    set_point_regions(n_nodes);
-    const Quadrature<dim - 1> quadrature
-      = data.lobatto ? Quadrature<dim - 1>(QGaussLobatto<dim - 1>(n_nodes)) :
-                       Quadrature<dim - 1>(QGauss<dim - 1>(n_nodes));
-    const MappingQ1<dim> mapping;
-    const auto           flags = update_values | update_quadrature_points
-                       | update_JxW_values | update_normal_vectors;
-    FEFaceValues<dim> lower(mapping, dofs.get_fe(), quadrature, flags);
-    FEFaceValues<dim> upper(mapping, dofs.get_fe(), quadrature, flags);
-    // Each element once, from its lower (smaller ply index) cell.
-    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int f : cell->face_indices())
-          if (is_cohesive(cell, f)
-              && cell->neighbor(f)->material_id() > cell->material_id())
-            elements.push_back(make_element(dofs, cell, f, lower, upper));
+    make_elements(dofs);
 
     const MPI_Comm comm
       = dofs.copy_handler().get_triangulation().get_communicator();
@@ -300,6 +285,36 @@ namespace amfrac
 
 
   template <int dim>
+  void
+  CohesiveInterfaces<dim>::make_elements(const TiedCopyDoFs<dim> &dofs)
+  {
+    elements.clear();
+    const unsigned int n_nodes = dofs.get_fe().degree + 1;
+    set_point_regions(n_nodes);
+    const Quadrature<dim - 1> quadrature
+      = data.lobatto ? Quadrature<dim - 1>(QGaussLobatto<dim - 1>(n_nodes)) :
+                       Quadrature<dim - 1>(QGauss<dim - 1>(n_nodes));
+    const MappingQ1<dim> mapping;
+    const auto           flags = update_values | update_quadrature_points
+                       | update_JxW_values | update_normal_vectors;
+    FEFaceValues<dim> lower(mapping, dofs.get_fe(), quadrature, flags);
+    FEFaceValues<dim> upper(mapping, dofs.get_fe(), quadrature, flags);
+    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          {
+            const bool lower_side
+              = (is_cohesive(cell, f)
+                 && cell->neighbor(f)->material_id() > cell->material_id())
+                || (is_crack(cell, f) && cell->id() < cell->neighbor(f)->id());
+            if (lower_side)
+              elements.push_back(make_element(dofs, cell, f, lower, upper));
+          }
+  }
+
+
+
+  template <int dim>
   std::size_t
   CohesiveInterfaces<dim>::n_local_points() const
   {
@@ -330,16 +345,20 @@ namespace amfrac
                                     Tensor<2, dim>       &tangent) const
   {
     const auto response
-      = data.camanho_davila ?
+      = converged.toughness > 0 ?
+          cohesive::camanho_davila_law<dim>(gap + converged.offset,
+                                            converged.history,
+                                            crack_law(converged)) :
+        data.camanho_davila ?
           cohesive::camanho_davila_law<dim>(gap,
                                             converged.history,
                                             camanho_davila) :
           cohesive::seed_law<dim>(gap, converged.history, law);
-    PointState state;
-    state.history  = response.history;
-    state.gap      = gap;
-    state.traction = response.traction;
-    tangent        = response.tangent;
+    PointState state = converged;
+    state.history    = response.history;
+    state.gap        = gap;
+    state.traction   = response.traction;
+    tangent          = response.tangent;
     // Viscous regularization (Gao & Bower 2004) of the bonded phase: a
     // traction eta (g - g_old) / dt that gives a softening point the
     // positive stiffness eta / dt, so that a step cut back far enough gets
@@ -511,7 +530,7 @@ namespace amfrac
       tangential += s.traction[i] * s.traction[i];
     const double  limit  = data.friction * -s.traction[0];
     unsigned char status = 0;
-    if (s.gap[0] < 0)
+    if (s.gap[0] + s.offset[0] < 0)
       status = std::sqrt(tangential) < (1 - 1e-10) * limit ? 1 : 2;
     if (status != element.status[q])
       ++changes;
@@ -611,13 +630,15 @@ namespace amfrac
     // The secant law unloads to the origin: what is stored is half of
     // traction times gap while bonded; after debonding the contact penalty
     // and the elastic stick stretch store energy.
+    // A crack's law is that of the offset gap (the offset is 0 elsewhere).
+    const Tensor<1, dim> gap = s.gap + s.offset;
     if (!s.history.debonded)
-      return 0.5 * s.traction * s.gap;
+      return 0.5 * s.traction * gap;
     double tangential = 0;
     for (unsigned int i = 1; i < dim; ++i)
       tangential += s.traction[i] * s.traction[i];
-    return 0.5 * s.traction[0] * s.gap[0]
-           + 0.5 * tangential / law.stick_penalty;
+    return 0.5 * s.traction[0] * gap[0]
+           + (tangential > 0 ? 0.5 * tangential / law.stick_penalty : 0.);
   }
 
 
@@ -628,7 +649,7 @@ namespace amfrac
   {
     if (state.history.debonded)
       return 1.;
-    return data.camanho_davila ?
+    return data.camanho_davila || state.toughness > 0 ?
              state.history.kappa :
              cohesive::seed_damage(state.history.kappa, law);
   }
@@ -652,7 +673,9 @@ namespace amfrac
             const PointState &s = element.converged[q];
             Record            r;
             r.position  = element.points[q];
-            r.interface = data.interfaces[element.interface];
+            r.interface = element.interface < data.interfaces.size() ?
+                            data.interfaces[element.interface] :
+                            Record::crack;
             for (unsigned int k = 0; k < n; ++k)
               r.displacement[element.component[k]]
                 += 0.5 * (k < n / 2 ? -1 : 1) * element.shape(q, k)
@@ -676,7 +699,8 @@ namespace amfrac
   std::vector<typename CohesiveInterfaces<dim>::Ledger>
   CohesiveInterfaces<dim>::ledger(const MPI_Comm comm) const
   {
-    std::vector<Ledger> result(data.interfaces.size());
+    std::vector<Ledger> result(data.interfaces.size()
+                               + (cracks_enabled() ? 1 : 0));
     for (const Element &element : elements)
       {
         Ledger &l = result[element.interface];
@@ -688,14 +712,17 @@ namespace amfrac
             l.work += (s.bond_work + s.friction_work + s.viscous_work) * JxW;
             l.viscous += s.viscous_work * JxW;
             l.stored += stored * JxW;
+            // A crack starts holding s.inserted (0 elsewhere) before its
+            // traction did any work.
+            l.inserted += s.inserted * JxW;
             if (s.history.debonded)
               {
-                l.dissipated += s.bond_work * JxW;
+                l.dissipated += (s.bond_work + s.inserted) * JxW;
                 l.friction += (s.friction_work - stored) * JxW;
                 l.debonded += JxW;
               }
             else
-              l.dissipated += (s.bond_work - stored) * JxW;
+              l.dissipated += (s.bond_work + s.inserted - stored) * JxW;
             if (s.history.kappa > 0)
               l.damaged += JxW;
             l.min_opening = std::min(l.min_opening, s.gap[0]);
@@ -708,7 +735,8 @@ namespace amfrac
                           &l.dissipated,
                           &l.friction,
                           &l.debonded,
-                          &l.damaged};
+                          &l.damaged,
+                          &l.inserted};
         for (double *value : sums)
           *value = Utilities::MPI::sum(*value, comm);
         l.min_opening = Utilities::MPI::min(l.min_opening, comm);

@@ -41,7 +41,8 @@ namespace amfrac
     std::vector<std::vector<Point<dim>>> damaged(data.interfaces.size());
     for (const Element &element : elements)
       for (unsigned int q = 0; q < element.points.size(); ++q)
-        if (damage(element.converged[q]) > 0)
+        if (element.interface < damaged.size()
+            && damage(element.converged[q]) > 0)
           damaged[element.interface].push_back(element.points[q]);
     for (auto &points : damaged)
       {
@@ -160,6 +161,11 @@ namespace amfrac
     out.push_back(s.bond_work);
     out.push_back(s.friction_work);
     out.push_back(s.viscous_work);
+    for (unsigned int i = 0; i < dim; ++i)
+      out.push_back(s.offset[i]);
+    out.push_back(s.strength);
+    out.push_back(s.toughness);
+    out.push_back(s.inserted);
   }
 
 
@@ -179,6 +185,11 @@ namespace amfrac
     s.bond_work     = *in++;
     s.friction_work = *in++;
     s.viscous_work  = *in++;
+    for (unsigned int i = 0; i < dim; ++i)
+      s.offset[i] = *in++;
+    s.strength  = *in++;
+    s.toughness = *in++;
+    s.inserted  = *in++;
     return s;
   }
 

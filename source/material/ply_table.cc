@@ -88,9 +88,10 @@ namespace amfrac
         ply.rotation = ply_rotation(laminate.plies[p].angle);
         ply.stiffness_3d
           = rotate(stiffness_in_material_axes(material.elastic), ply.rotation);
-        ply.stiffness = restrict_to_model<dim>(ply.stiffness_3d);
-        ply.strengths = material.strengths;
-        ply.density   = material.elastic.density;
+        ply.stiffness       = restrict_to_model<dim>(ply.stiffness_3d);
+        ply.strengths       = material.strengths;
+        ply.density         = material.elastic.density;
+        ply.fracture_energy = material.fracture_energy;
         table.push_back(ply);
       }
     if (dim == 2 && laminate.in_plane)

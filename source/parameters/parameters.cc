@@ -229,25 +229,13 @@ namespace amfrac
       /** The entries of `subsection Materials`, with defaults for a
        * carbon/epoxy ply (MPa, t/mm^3). */
       const std::vector<std::pair<const char *, const char *>> material_entries
-        = {{"E1", "135000"},
-           {"E2", "10000"},
-           {"E3", "10000"},
-           {"G12", "5000"},
-           {"G13", "5000"},
-           {"G23", "3448"},
-           {"nu12", "0.3"},
-           {"nu13", "0.3"},
-           {"nu23", "0.45"},
-           {"Density", "1.6e-9"},
-           {"Xt", "2000"},
-           {"Xc", "1200"},
-           {"Yt", "50"},
-           {"Yc", "200"},
-           {"Zt", "50"},
-           {"Zc", "200"},
-           {"S12", "80"},
-           {"S13", "80"},
-           {"S23", "60"}};
+        = {{"E1", "135000"},      {"E2", "10000"}, {"E3", "10000"},
+           {"G12", "5000"},       {"G13", "5000"}, {"G23", "3448"},
+           {"nu12", "0.3"},       {"nu13", "0.3"}, {"nu23", "0.45"},
+           {"Density", "1.6e-9"}, {"Xt", "2000"},  {"Xc", "1200"},
+           {"Yt", "50"},          {"Yc", "200"},   {"Zt", "50"},
+           {"Zc", "200"},         {"S12", "80"},   {"S13", "80"},
+           {"S23", "60"},         {"Gc", "0.3"}};
     } // namespace
 
 
@@ -267,9 +255,14 @@ namespace amfrac
         {
           const std::string n(name);
           const std::string unit
-            = n == "Density" ? "t/mm^3" : (n.rfind("nu", 0) == 0 ? "-" : "MPa");
+            = n == "Density" ? "t/mm^3" :
+              n == "Gc"      ? "N/mm" :
+                               (n.rfind("nu", 0) == 0 ? "-" : "MPa");
           const std::string what
-            = n.rfind("nu", 0) == 0 ?
+            = n == "Gc" ?
+                "fracture energy of a crack inserted inside the "
+                "ply (Crack insertion), any mode" :
+              n.rfind("nu", 0) == 0 ?
                 "Poisson ratio" :
                 (n == "Density" ? "mass density" :
                                   (n[0] == 'E' || n[0] == 'G' ?
@@ -348,6 +341,7 @@ namespace amfrac
           s.S12                = get("S12", m);
           s.S13                = get("S13", m);
           s.S23                = get("S23", m);
+          mat.fracture_energy  = get("Gc", m);
           const std::string at = " (material '" + mat.name + "')";
           // Moduli beyond 1e8 MPa (80 times diamond's) or densities beyond
           // 1e-6 t/mm^3 (40 times osmium's) are unit mistakes (Pa, kg/m^3),
@@ -377,6 +371,9 @@ namespace amfrac
               throw InputError("Materials", error.what() + at);
             }
           require(e.density >= 0, "Materials/Density", "negative" + at);
+          require(mat.fracture_energy > 0,
+                  "Materials/Gc",
+                  "must be positive" + at);
           for (const auto &[key, value] : material_entries)
             if (key[0] == 'X' || key[0] == 'Y' || key[0] == 'Z'
                 || key[0] == 'S')
@@ -1436,6 +1433,7 @@ namespace amfrac
       Adaptivity::declare_parameters(prm);
       Buckling::declare_parameters(prm);
       Checkpoint::declare_parameters(prm);
+      CrackInsertion::declare_parameters(prm);
     }
 
 
@@ -1494,6 +1492,8 @@ namespace amfrac
                          "= in-plane");
       check_arc_length_input();
       checkpoint.parse_parameters(prm, output.directory);
+      cracks.parse_parameters(prm, geometry.plies.size());
+      check_crack_input();
       if (adaptivity.active() && checkpoint.by_count_or_stop())
         throw InputError(checkpoint.every_n_steps > 0 ?
                            "Checkpoint/Every n steps" :
@@ -1533,6 +1533,42 @@ namespace amfrac
                          "history is not available yet; switch Refine "
                          "every, Error threshold and Process zone elements "
                          "off");
+    }
+
+
+
+    void
+    Parameters::check_crack_input() const
+    {
+      if (!cracks.active)
+        return;
+      const std::string name = "Crack insertion/Criterion";
+      const auto refuse = [&](const bool condition, const std::string &what) {
+        if (condition)
+          throw InputError(name,
+                           "crack insertion runs on the static Newton path "
+                           "with displacement or load control so far; it "
+                           "cannot be combined with "
+                             + what);
+      };
+      refuse(time.explicit_dynamics, "Time/Time integration = explicit");
+      refuse(total_lagrangian, "Kinematics = total Lagrangian");
+      refuse(geometry.in_plane,
+             "Geometry/2D model = in-plane (a homogenized laminate has no "
+             "plies to crack)");
+      refuse(adaptivity.active() || adaptivity.during_history(),
+             "refinement (the Adaptivity subsection)");
+      refuse(nonlinear_solver.arc_length
+               || nonlinear_solver.dissipation_control,
+             "Nonlinear solver/Control = "
+               + std::string(nonlinear_solver.arc_length ? "arc-length" :
+                                                           "dissipation or "
+                                                           "opening"));
+      refuse(buckling.active(), "Buckling/Number of modes > 0");
+      // (Every minutes is on by default: such a run writes none.)
+      refuse(checkpoint.by_count_or_stop() || checkpoint.resume,
+             "checkpoints (Checkpoint/Every n steps, Stop after step, "
+             "Resume: a checkpoint does not keep the inserted cracks yet)");
     }
 
 

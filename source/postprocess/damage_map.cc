@@ -181,13 +181,15 @@ namespace amfrac
     if (dim != 3)
       return {};
     std::vector<double> local;
+    // Top views are of ply interfaces; inserted cracks cut across plies.
     for (const auto &p : points)
-      local.insert(local.end(),
-                   {p.position[0],
-                    p.position[1],
-                    double(p.interface),
-                    p.damage,
-                    double(p.status)});
+      if (p.interface != InterfacePointRecord<dim>::crack)
+        local.insert(local.end(),
+                     {p.position[0],
+                      p.position[1],
+                      double(p.interface),
+                      p.damage,
+                      double(p.status)});
     const auto gathered = Utilities::MPI::gather(comm, local, 0);
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return {};

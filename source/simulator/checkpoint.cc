@@ -338,6 +338,11 @@ namespace amfrac
   void
   Simulator<dim>::resume(const CheckpointStore::Contents &checkpoint)
   {
+    if (parameters.cracks.active)
+      throw InputError("Crack insertion/Criterion",
+                       "a run with crack insertion cannot resume from a "
+                       "checkpoint yet (checkpoints do not keep the "
+                       "inserted cracks)");
     restart = std::make_unique<CheckpointStore::Contents>(checkpoint);
     reading(checkpoint.folder, comm, [&]() {
       restore_mesh(checkpoint.run);

@@ -727,15 +727,26 @@ namespace amfrac
     double     interface_storage = 0;
     for (unsigned int k = 0; k < ledger.size(); ++k)
       {
-        const std::string name = std::to_string(interfaces->interfaces()[k]);
+        // Ply interface k gives the columns "..._ik", the inserted cracks
+        // "..._cracks".
+        const bool        crack = k == interfaces->interfaces().size();
+        const std::string name
+          = crack ? "_cracks" : "_i" + interfaces->ledger_name(k);
         interface_work += ledger[k].work;
         interface_storage += ledger[k].stored;
-        columns.emplace_back("dissipated_i" + name, ledger[k].dissipated);
-        columns.emplace_back("friction_i" + name, ledger[k].friction);
-        columns.emplace_back("viscous_i" + name, ledger[k].viscous);
-        columns.emplace_back("debonded_i" + name, ledger[k].debonded);
-        columns.emplace_back("damaged_i" + name, ledger[k].damaged);
-        columns.emplace_back("min_opening_i" + name, ledger[k].min_opening);
+        columns.emplace_back("dissipated" + name, ledger[k].dissipated);
+        if (!crack)
+          columns.emplace_back("friction" + name, ledger[k].friction);
+        columns.emplace_back("viscous" + name, ledger[k].viscous);
+        columns.emplace_back("debonded" + name, ledger[k].debonded);
+        columns.emplace_back("damaged" + name, ledger[k].damaged);
+        columns.emplace_back("min_opening" + name, ledger[k].min_opening);
+        if (crack)
+          {
+            columns.emplace_back("inserted_energy_cracks", ledger[k].inserted);
+            columns.emplace_back("crack_faces", interfaces->n_crack_faces());
+            columns.emplace_back("fragments", count_fragments());
+          }
       }
     columns.emplace_back("interface_stored", interface_storage);
     return interface_work;
@@ -862,6 +873,45 @@ namespace amfrac
             set_interface_time_step(trial_t - t);
             report = solve_newton_step(trial_t, solver);
           }
+        // Crack insertion: insert the most critical faces and solve the
+        // step again, until no face fails or the rounds run out.
+        unsigned int rounds    = 0;
+        bool         overshoot = false;
+        while (parameters.cracks.active && report.converged)
+          {
+            if (rounds == parameters.cracks.rounds_per_step)
+              {
+                pcout << "  t=" << trial_t << ": " << rounds
+                      << " insertion rounds (Crack insertion/Rounds per "
+                         "step); faces still failing wait for the next step"
+                      << std::endl;
+                break;
+              }
+            // The first round may ask for a shorter step, so that a crack
+            // starts at its strength; later rounds follow what the
+            // inserted cracks set off.
+            const bool can_cut
+              = rounds == 0
+                && 0.5 * (trial_t - t) >= p.minimum_step_fraction * nominal;
+            const auto inserted = insert_cracks(t, trial_t, can_cut);
+            if (inserted.overshoot)
+              {
+                overshoot = true;
+                dt        = 0.5 * (trial_t - t);
+                pcout << "  t=" << trial_t << ": Hoffman index "
+                      << inserted.hoffman
+                      << " beyond 1 + Crack insertion/Onset tolerance; step "
+                         "cut to "
+                      << dt << std::endl;
+                break;
+              }
+            if (inserted.inserted == 0)
+              break;
+            ++rounds;
+            report = solve_newton_step(trial_t, solver);
+          }
+        if (overshoot)
+          continue;
         if (!report.converged)
           {
             if (p.dissipation_control && !by_dissipation)

@@ -30,8 +30,22 @@ namespace amfrac
   {
     TimerOutput::Scope scope(timer, "setup");
     make_laminate_mesh(parameters.geometry, laminate, triangulation);
-    if (!parameters.cohesive.interfaces.empty())
+    if (!parameters.cohesive.interfaces.empty() || parameters.cracks.active)
       interfaces = std::make_unique<CohesiveInterfaces<dim>>(prm.cohesive);
+    if (parameters.cracks.active)
+      {
+        interfaces->enable_cracks(parameters.cracks.penalty);
+        const std::string &constants = prm.boundary_conditions.constants;
+        crack_region = make_expression_function<dim>({parameters.cracks.region},
+                                                     1,
+                                                     constants,
+                                                     "Crack insertion/Region");
+        crack_strength_scale
+          = make_expression_function<dim>({parameters.cracks.strength_scale},
+                                          1,
+                                          constants,
+                                          "Crack insertion/Strength scale");
+      }
     if (parameters.total_lagrangian)
       finite_strain
         = std::make_unique<TotalLagrangianAssembler<dim>>(dof_layer, plies);
@@ -385,8 +399,11 @@ namespace amfrac
                        "on at least one face");
     // Refinement cycles repeat the whole run per mesh: they neither
     // checkpoint nor resume (the parameters refuse Every n steps there).
-    const bool resumable = parameters.time.explicit_dynamics || interfaces
-                           || finite_strain || !parameters.adaptivity.active();
+    // Inserted cracks are not in checkpoints yet (the parameters refuse
+    // the Checkpoint subsection with them), so no signal writes one.
+    const bool resumable = (parameters.time.explicit_dynamics || interfaces
+                            || finite_strain || !parameters.adaptivity.active())
+                           && !parameters.cracks.active;
     if (restart && !resumable)
       throw InputError("Adaptivity/Refinement cycles",
                        "a run with refinement cycles cannot resume from a "
@@ -405,6 +422,8 @@ namespace amfrac
           << ", " << laminate.n_plies() << " plies, ";
     if (interfaces)
       pcout << interfaces->interfaces().size() << " cohesive interface(s), ";
+    if (parameters.cracks.active)
+      pcout << "crack insertion (Hoffman), ";
     if (finite_strain)
       pcout << "total Lagrangian, ";
     pcout << triangulation.n_active_cells() << " cells, " << dof_layer.n_dofs()

@@ -430,6 +430,36 @@ subsection Time
   set Time integration = explicit
 end"
 
+# Crack insertion: combinations not available yet, bad plies, bad data.
+expect crack_explicit "Crack insertion/Criterion" "$base
+subsection Crack insertion
+  set Criterion = hoffman
+end
+subsection Time
+  set Time integration = explicit
+end"
+expect crack_plies "Crack insertion/Plies" "$base
+subsection Crack insertion
+  set Criterion = hoffman
+  set Plies     = 0, 7
+end"
+expect crack_region "Crack insertion/Region" "$base
+subsection Crack insertion
+  set Criterion = hoffman
+  set Region    = x <
+end"
+expect crack_checkpoint "Crack insertion/Criterion" "$base
+subsection Crack insertion
+  set Criterion = hoffman
+end
+subsection Checkpoint
+  set Every n steps = 2
+end"
+expect crack_toughness "Materials/Gc" "$base
+subsection Materials
+  set Gc = 0
+end"
+
 # A missing file and an unknown option.
 "$amfrac" no_such_file.prm > /dev/null 2> missing.stderr
 status=$?
@@ -449,6 +479,43 @@ printf '%s\n' "$(with '\[0/90\]s' '[0/90')" > keep.prm
 if [ "$(cat out/history.csv)" != keep ]; then
   echo "FAIL a rejected run touched existing output"; failures=$((failures + 1))
 fi
+rm -rf out
+
+# A crack whose penalty cannot hold its bilinear law stops the run when it
+# is inserted, names the parameter and keeps what was written before.
+printf '%s\n' "set Dimension = 2
+subsection Geometry
+  set Stacking sequence = [90]
+  set Ply thickness = 1
+  set Length = 4
+  set Elements along length = 4
+end
+subsection Boundary conditions
+  subsection x-
+    set Type = displacement
+    set Components = x, y
+    set Displacement = 0; 0
+  end
+  subsection x+
+    set Type = displacement
+    set Components = x
+    set Displacement = 0.04*t
+  end
+end
+subsection Crack insertion
+  set Criterion = hoffman
+  set Penalty stiffness = 100
+end
+subsection Output
+  set Directory = out
+  set Field format = none
+end" > crack_penalty.prm
+"$amfrac" crack_penalty.prm > crack_penalty.stdout 2> crack_penalty.stderr
+status=$?
+if [ $status -eq 0 ] || ! grep -q "Crack insertion/Penalty stiffness" crack_penalty.stderr \
+   || [ "$(wc -l < out/history.csv)" -lt 2 ]; then
+  echo "FAIL crack_penalty: status $status"; cat crack_penalty.stderr; failures=$((failures + 1))
+else echo "ok   crack_penalty: $(cat crack_penalty.stderr)"; fi
 rm -rf out
 
 echo "$failures failure(s)"

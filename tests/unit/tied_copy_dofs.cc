@@ -4,6 +4,7 @@
 #include "../check.h"
 
 #include <amfrac/dofs/tied_copy_dofs.h>
+#include <cmath>
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
@@ -25,6 +26,73 @@ namespace
           return true;
       return false;
     };
+  }
+
+  /** Give every cell the rigid translation of its fragment (@p isolated
+   * cells one, all others another) on the reduced numbering: the number of
+   * reduced entries two cells would set differently. Zero if and only if
+   * the released faces separate the fragments, so that each one moves
+   * rigidly, stress free. */
+  unsigned int
+  translation_conflicts(const TiedCopyDoFs<3>       &dofs,
+                        const std::vector<Point<3>> &isolated)
+  {
+    const Tensor<1, 3>                   a({1., 2., 3.}), b({-1., 0., 5.});
+    std::vector<double>                  value(dofs.n_dofs(), std::nan(""));
+    std::vector<types::global_dof_index> indices(
+      dofs.get_fe().n_dofs_per_cell());
+    unsigned int conflicts = 0;
+    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
+      {
+        bool moved_alone = false;
+        for (const auto &c : isolated)
+          moved_alone = moved_alone || cell->center().distance(c) < 1e-10;
+        const Tensor<1, 3> &shift = moved_alone ? a : b;
+        dofs.get_dof_indices(cell, indices);
+        for (const auto i : indices)
+          {
+            const double v = shift[dofs.component(i)];
+            if (!std::isnan(value[i]) && value[i] != v)
+              ++conflicts;
+            value[i] = v;
+          }
+      }
+    return conflicts;
+  }
+
+  /** Crack insertion's node-splitting cases in 3D (Q1). */
+  void
+  check_splitting_3d()
+  {
+    // A face inside the mesh, its edges all interior: every node of it is
+    // a crack-front node and none splits.
+    Triangulation<3> cube;
+    GridGenerator::subdivided_hyper_cube(cube, 3, 0, 3);
+    TiedCopyDoFs<3> inside(cube, 1);
+    inside.distribute(release_at<3>({Point<3>(1.5, 1.5, 1)}));
+    CHECK(inside.n_dofs() == 3 * 64);
+
+    // 2 x 2 x 1 cells, two faces meeting at the edge x = y = 1 (an L):
+    // the two nodes on that edge and the four at the L's outer ends split
+    // in two, 18 + 6 nodes, and cell A (the corner x, y < 1) becomes a
+    // fragment that can translate on its own.
+    Triangulation<3> slab;
+    GridGenerator::subdivided_hyper_rectangle(slab,
+                                              {2, 2, 1},
+                                              Point<3>(0, 0, 0),
+                                              Point<3>(2, 2, 1));
+    const Point<3>  A(0.5, 0.5, 0.5);
+    TiedCopyDoFs<3> l_crack(slab, 1);
+    l_crack.distribute(
+      release_at<3>({Point<3>(1, 0.5, 0.5), Point<3>(0.5, 1, 0.5)}));
+    CHECK(l_crack.n_dofs() == 3 * 24);
+    CHECK(translation_conflicts(l_crack, {A}) == 0);
+    // One leg of the L only: A is still bonded to its other neighbour, and
+    // the translations conflict on the nodes of the intact face.
+    TiedCopyDoFs<3> one_leg(slab, 1);
+    one_leg.distribute(release_at<3>({Point<3>(1, 0.5, 0.5)}));
+    CHECK(one_leg.n_dofs() == 3 * (18 + 2));
+    CHECK(translation_conflicts(one_leg, {A}) > 0);
   }
 
   template <int dim>
@@ -87,6 +155,8 @@ main(int argc, char *argv[])
       check_hanging_count<2>(degree);
       check_hanging_count<3>(degree);
     }
+
+  check_splitting_3d();
 
   // 2 x 2 squares, Q1: 9 nodes. Releasing the lower half of the vertical
   // mid-line splits its boundary node (1,0) only: the centre node (1,1) is

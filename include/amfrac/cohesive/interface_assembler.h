@@ -14,7 +14,9 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <functional>
 #include <map>
+#include <set>
 #include <vector>
 
 namespace amfrac
@@ -43,6 +45,87 @@ namespace amfrac
     using Matrix       = TrilinosWrappers::SparseMatrix;
 
     explicit CohesiveInterfaces(const parameters::CohesiveInterfaces &data);
+
+    /** Crack insertion: inserted faces get an extrinsic bilinear law of
+     * penalty stiffness @p penalty (one more entry of ledger()). */
+    void
+    enable_cracks(const double penalty);
+
+    bool
+    cracks_enabled() const
+    {
+      return crack_penalty > 0;
+    }
+
+    /** True if face @p face of @p cell is an inserted crack. */
+    bool
+    is_crack(const typename Triangulation<dim>::cell_iterator &cell,
+             const unsigned int                                face) const;
+
+    /** Release face @p face of @p cell (a regular interior face, seen from
+     * either side) as a crack; the DoF layer and rebuild() take it up. */
+    void
+    add_crack(const typename Triangulation<dim>::cell_iterator &cell,
+              const unsigned int                                face);
+
+    /** Number of inserted crack faces (each once, all ranks: the set is
+     * replicated). */
+    std::size_t
+    n_crack_faces() const
+    {
+      return cracked.size() / 2;
+    }
+
+    /** The global traction (stress times @p normal, the lower cell's
+     * outward normal) at @p point of the face between @p lower and
+     * @p upper: in the state a new crack starts from if @p at_onset is
+     * false (the last converged state), else in the state whose stress
+     * failed the face (the onset). */
+    using CrackTraction = std::function<Tensor<1, dim>(const CellIterator &,
+                                                       const CellIterator &,
+                                                       const Point<dim> &,
+                                                       const Tensor<1, dim> &,
+                                                       const bool at_onset)>;
+
+    /** What a rebuild() did on this rank. */
+    struct CrackReport
+    {
+      unsigned long new_points = 0;
+      /** Energy per area held at insertion, summed times JxW. */
+      double inserted_energy = 0;
+    };
+
+    /**
+     * After the DoF layer was distributed again with new cracks released
+     * (the mesh unchanged): rebuild the elements on the new numbering.
+     * Existing elements keep their converged and trial states; the points
+     * of a new crack start at the traction T0 of the converged state
+     * (@p traction, the mean stress of the two cells times the normal) on
+     * an extrinsic law with the ply's fracture energy @p toughness (of the
+     * lower cell): the gap is offset by T0 / penalty, so that the law gives
+     * T0 at zero opening and the face carries what the intact material
+     * did; its onset traction is the largest effective traction at the
+     * onset state (the point's and the face centre's, so that a point
+     * where a bending gradient lowers the stress does not start weak).
+     * Collective.
+     */
+    CrackReport
+    rebuild(const TiedCopyDoFs<dim>                           &dofs,
+            const CrackTraction                               &traction,
+            const std::function<double(const CellIterator &)> &toughness);
+
+    /** The elements (lower cell and face) of all ranks whose points are
+     * all debonded: the faces that separate fragments (collective). */
+    std::vector<std::pair<CellId, unsigned int>>
+    separated_faces(const MPI_Comm comm) const;
+
+    /** The name of ledger entry @p k: the interface index, or "cracks". */
+    std::string
+    ledger_name(const unsigned int k) const
+    {
+      return k < data.interfaces.size() ? std::to_string(data.interfaces[k]) :
+                                          std::string("cracks");
+    }
 
     /** The faces that the DoF layer must leave untied. */
     typename TiedCopyDoFs<dim>::FaceFilter
@@ -146,6 +229,10 @@ namespace amfrac
       double debonded    = 0; ///< fully debonded area (length in 2D)
       double damaged     = 0; ///< area with kappa > 0
       double min_opening = 0; ///< most negative normal gap (contact)
+      /** Inserted cracks: the energy their faces held at insertion (the
+       * offset law's T0^2 / 2 K per area; stored + dissipated = work +
+       * inserted). */
+      double inserted = 0;
     };
 
     /** One ledger per cohesive interface (summed over ranks), in the
@@ -276,6 +363,13 @@ namespace amfrac
       double         bond_work     = 0;
       double         friction_work = 0;
       double         viscous_work  = 0;
+      /** Inserted cracks (zero elsewhere): the gap offset T0 / K (local
+       * frame), the onset traction, the fracture energy and the energy
+       * per area held at insertion. */
+      Tensor<1, dim> offset;
+      double         strength  = 0;
+      double         toughness = 0;
+      double         inserted  = 0;
     };
 
     /** Two faces across an interface and what their integration needs. */
@@ -288,8 +382,9 @@ namespace amfrac
       unsigned int face; ///< of the lower cell
       /** The lower cell in the reference coordinates of its coarse
        * (level-0) cell: lower and upper corner. */
-      std::pair<Point<dim>, Point<dim>>    box;
-      unsigned int                         interface; ///< position in list
+      std::pair<Point<dim>, Point<dim>> box;
+      /** Position in the list of interfaces; its size for a crack. */
+      unsigned int                         interface;
       std::vector<types::global_dof_index> dofs; ///< lower face, upper face
       std::vector<unsigned char>           component;
       /** shape(q, k): the value of local dof k at point q, negative on the
@@ -317,11 +412,15 @@ namespace amfrac
       std::vector<std::pair<unsigned int, double>> nonzero;
     };
 
-    const parameters::CohesiveInterfaces    data;
-    const cohesive::SeedLawProperties       law;
-    const cohesive::CamanhoDavilaProperties camanho_davila;
-    std::vector<Element>                    elements;
-    double                                  time_step = 1;
+    const parameters::CohesiveInterfaces data;
+    /** Inserted crack faces, each from both sides; penalty of their law
+     * (0: no crack insertion). */
+    std::set<std::pair<CellId, unsigned int>> cracked;
+    double                                    crack_penalty = 0;
+    const cohesive::SeedLawProperties         law;
+    const cohesive::CamanhoDavilaProperties   camanho_davila;
+    std::vector<Element>                      elements;
+    double                                    time_step = 1;
 
     /** Evaluate point @p q of @p element at @p global_gap (trial state,
      * local @p tangent); returns its traction in the global frame times
@@ -360,7 +459,7 @@ namespace amfrac
     static constexpr unsigned int
     state_size()
     {
-      return 3 * dim + (dim - 1) + 5;
+      return 4 * dim + (dim - 1) + 8;
     }
     static void
     pack(const PointState &state, std::vector<double> &out);
@@ -388,6 +487,11 @@ namespace amfrac
     void
     check_conforming(const DoFHandler<dim> &handler) const;
 
+    /** Every element from its lower cell: the smaller ply index for a
+     * ply interface, the smaller CellId for a crack. */
+    void
+    make_elements(const TiedCopyDoFs<dim> &dofs);
+
     /** The element of @p face of @p cell (the lower ply's side); @p lower
      * and @p upper evaluate the two faces. */
     Element
@@ -396,6 +500,12 @@ namespace amfrac
                  const unsigned int       face,
                  FEFaceValues<dim>       &lower,
                  FEFaceValues<dim>       &upper) const;
+
+    /** The extrinsic law of a crack point: Camanho-Davila with one
+     * strength and one fracture energy in all modes (those of the point)
+     * and the crack penalty. */
+    cohesive::CamanhoDavilaProperties
+    crack_law(const PointState &state) const;
 
     /** The law at one point, with the work increment from the converged
      * state. */

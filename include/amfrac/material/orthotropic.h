@@ -32,6 +32,8 @@ namespace amfrac
     std::string      name;
     ElasticConstants elastic;
     Strengths        strengths;
+    /** Fracture energy of a crack inserted inside the ply [N/mm]. */
+    double fracture_energy = 0.3;
   };
 
   /**

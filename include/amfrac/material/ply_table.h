@@ -36,6 +36,8 @@ namespace amfrac
     Tensor<2, 3> rotation;
     Strengths    strengths;
     double       density;
+    /** Fracture energy of an inserted intra-ply crack [N/mm]. */
+    double fracture_energy = 0;
     /** The plies of a homogenized laminate (2D in-plane model), bottom
      * first; empty otherwise. */
     std::vector<MembraneLayer> layers;

@@ -2,6 +2,7 @@
 
 #include <amfrac/geometry/stacking_sequence.h>
 #include <amfrac/material/orthotropic.h>
+#include <amfrac/parameters/crack_insertion.h>
 #include <array>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
@@ -437,6 +438,7 @@ namespace amfrac
       Adaptivity         adaptivity;
       Buckling           buckling;
       Checkpoint         checkpoint;
+      CrackInsertion     cracks;
       /** Every parameter with its value (ShortPRM), as read: the text a
        * checkpoint stores so that a restart can rebuild the run. */
       std::string text;
@@ -466,6 +468,9 @@ namespace amfrac
       /** Scenes arc-length control cannot follow (InputError). */
       void
       check_arc_length_input() const;
+      /** What crack insertion cannot be combined with yet (InputError). */
+      void
+      check_crack_input() const;
     };
 
     /** Split "a; b; c" into trimmed expressions. */

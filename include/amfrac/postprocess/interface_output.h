@@ -26,12 +26,17 @@ namespace amfrac
       contact   = 3  ///< no bond left, faces pressed together
     };
 
+    /** The interface field of a point on a crack inserted inside a ply
+     * (Crack insertion). */
+    static constexpr unsigned int crack = 1000000;
+
     Point<dim>     position;     ///< reference configuration
     Tensor<1, dim> displacement; ///< mean of the two faces
-    unsigned int   interface;    ///< interface index k (plies k, k+1)
-    double         damage;       ///< 0 intact .. 1 debonded
-    Tensor<1, dim> gap;          ///< local frame: opening, sliding
-    Tensor<1, dim> traction;     ///< local frame: normal, shear
+    /** Interface index k (plies k, k+1), or crack. */
+    unsigned int   interface;
+    double         damage;   ///< 0 intact .. 1 debonded
+    Tensor<1, dim> gap;      ///< local frame: opening, sliding
+    Tensor<1, dim> traction; ///< local frame: normal, shear
     Status         status;
   };
 

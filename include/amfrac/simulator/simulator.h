@@ -193,6 +193,10 @@ namespace amfrac
     std::unique_ptr<FieldOutput<dim>>        field_output;
     std::unique_ptr<InterfaceOutput<dim>>    interface_output;
     std::unique_ptr<CohesiveInterfaces<dim>> interfaces;
+    /** Crack insertion: where faces may crack and the strength factor
+     * (nullptr without crack insertion). */
+    std::shared_ptr<Function<dim>> crack_region;
+    std::shared_ptr<Function<dim>> crack_strength_scale;
 
     AffineConstraints<double> constraints;
     /** Per prescribed condition: the reduced dofs on its face (and Where)
@@ -468,6 +472,57 @@ namespace amfrac
     void
     set_initial_velocity(const Vector &free_inverse_mass,
                          Vector       &velocity) const;
+    /** A face the Hoffman criterion fails on: its lower cell (the smaller
+     * CellId) and face, the Hoffman index of the mean stress of its two
+     * cells at the face centre, and how well its normal matches the
+     * largest principal stress direction. */
+    struct FailingFace
+    {
+      typename Triangulation<dim>::cell_iterator cell;
+      unsigned int                               face;
+      double                                     hoffman;
+      double                                     alignment;
+    };
+    /** Crack insertion: faces a crack may be inserted in (interior,
+     * regular, inside one ply of Crack insertion/Plies, of the candidate
+     * kind, in the region, not cracked yet). */
+    bool
+    crack_candidate(const typename Triangulation<dim>::cell_iterator &cell,
+                    const unsigned int face) const;
+    /** The faces to insert next, the most critical first, at most Faces
+     * per round; the same on every rank (collective). */
+    std::vector<FailingFace>
+    faces_to_crack() const;
+    /** What insert_cracks() did. */
+    struct InsertionReport
+    {
+      unsigned int inserted = 0;
+      /** The most critical face exceeded the onset tolerance: nothing was
+       * inserted, the step should be cut. */
+      bool   overshoot = false;
+      double hoffman   = 0;
+    };
+    /** The stresses of @p cell (owned, or across a released face) at
+     * @p unit_points from @p state (locally relevant entries). */
+    std::vector<PlyStress>
+    cell_stresses(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                  const std::vector<Point<dim>> &unit_points,
+                  const Vector                  &state) const;
+    /** After the converged Newton state at @p t (from @p t_previous):
+     * insert the faces of faces_to_crack(), rebuild the DoF layer, the
+     * interface elements and the Newton state, and move both states to
+     * the new numbering (collective). With @p check_onset, a most
+     * critical face beyond Crack insertion/Onset tolerance inserts
+     * nothing and reports the overshoot. */
+    InsertionReport
+    insert_cracks(const double t_previous,
+                  const double t,
+                  const bool   check_onset);
+    /** Connected components of cells across faces that are not fully
+     * debonded (collective). */
+    unsigned int
+    count_fragments() const;
+
     void
     collect_supports();
     void

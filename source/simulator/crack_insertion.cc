@@ -1,0 +1,486 @@
+// Crack insertion by node duplication inside plies (subsection Crack
+// insertion): the Hoffman check on the interior faces after a converged
+// load step, the choice of the faces, their release in the tied-copy DoF
+// layer and the move of the Newton state to the new numbering.
+#include <algorithm>
+#include <amfrac/parameters/input_error.h>
+#include <amfrac/simulator/simulator.h>
+#include <array>
+#include <cmath>
+#include <deal.II/base/mpi.h>
+#include <deal.II/fe/fe_values.h>
+#include <numeric>
+#include <set>
+#include <sstream>
+
+namespace amfrac
+{
+  namespace
+  {
+    Strengths
+    scaled(Strengths s, const double factor)
+    {
+      for (double *value :
+           {&s.Xt, &s.Xc, &s.Yt, &s.Yc, &s.Zt, &s.Zc, &s.S12, &s.S13, &s.S23})
+        *value *= factor;
+      return s;
+    }
+
+    /** Unit normal of a face from its vertices (the sign does not matter
+     * to the callers). */
+    template <int dim>
+    Tensor<1, dim>
+    face_normal(const typename Triangulation<dim>::cell_iterator &cell,
+                const unsigned int                                f)
+    {
+      const auto     face = cell->face(f);
+      Tensor<1, dim> n;
+      if constexpr (dim == 2)
+        {
+          const Tensor<1, dim> edge = face->vertex(1) - face->vertex(0);
+          n[0]                      = edge[1];
+          n[1]                      = -edge[0];
+        }
+      else
+        n = cross_product_3d(face->vertex(3) - face->vertex(0),
+                             face->vertex(2) - face->vertex(1));
+      return n / n.norm();
+    }
+
+    /** The model-plane block of a 3x3 model-axes stress. */
+    template <int dim>
+    SymmetricTensor<2, dim>
+    model_block(const SymmetricTensor<2, 3> &stress)
+    {
+      SymmetricTensor<2, dim> block;
+      for (unsigned int a = 0; a < dim; ++a)
+        for (unsigned int b = a; b < dim; ++b)
+          block[a][b] = stress[a][b];
+      return block;
+    }
+
+    /** A face as its cell's CellId (binary) and face number. */
+    using FaceKey = std::array<unsigned int, 5>;
+
+    template <int dim>
+    FaceKey
+    key_of(const typename Triangulation<dim>::cell_iterator &cell,
+           const unsigned int                                f)
+    {
+      const auto id = cell->id().template to_binary<dim>();
+      return {{id[0], id[1], id[2], id[3], f}};
+    }
+
+    /** The key of a face seen from its lower cell (the smaller CellId). */
+    template <int dim>
+    FaceKey
+    lower_key(const typename Triangulation<dim>::cell_iterator &cell,
+              const unsigned int                                f)
+    {
+      const auto neighbor = cell->neighbor(f);
+      return cell->id() < neighbor->id() ?
+               key_of<dim>(cell, f) :
+               key_of<dim>(neighbor, cell->neighbor_of_neighbor(f));
+    }
+
+    /** The Hoffman index beyond which a face cracks, and the smallest
+     * traction a crack starts from (relative to the largest strength). */
+    constexpr double hoffman_limit     = 1.;
+    constexpr double traction_fraction = 1e-9;
+  } // namespace
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::crack_candidate(
+    const typename Triangulation<dim>::cell_iterator &cell,
+    const unsigned int                                f) const
+  {
+    if (cell->at_boundary(f))
+      return false;
+    const auto neighbor = cell->neighbor(f);
+    // Regular faces inside one ply: a hanging face would need the crack on
+    // its coarse parent.
+    if (!neighbor->is_active() || cell->neighbor_is_coarser(f)
+        || neighbor->material_id() != cell->material_id())
+      return false;
+    const auto &selected = parameters.cracks.plies;
+    if (!selected.empty()
+        && !std::binary_search(selected.begin(),
+                               selected.end(),
+                               cell->material_id()))
+      return false;
+    if (interfaces->is_crack(cell, f))
+      return false;
+    using Candidates = parameters::CrackInsertion::Candidates;
+    if (parameters.cracks.candidates != Candidates::all)
+      {
+        // Through the thickness: the normal lies in the ply plane (the
+        // thickness axis is the last model axis).
+        const double         within = std::sin(6. * numbers::PI / 180.);
+        const Tensor<1, dim> n      = face_normal<dim>(cell, f);
+        if (std::abs(n[dim - 1]) > within)
+          return false;
+        if (parameters.cracks.candidates == Candidates::matrix)
+          {
+            // Parallel to the fibres: the normal is normal to axis 1.
+            const Tensor<2, 3> &R     = plies[cell->material_id()].rotation;
+            double              along = 0;
+            for (unsigned int a = 0; a < dim; ++a)
+              along += n[a] * R[laminate_axis<dim>(a)][0];
+            if (std::abs(along) > within)
+              return false;
+          }
+      }
+    return crack_region->value(cell->face(f)->center()) != 0.;
+  }
+
+
+
+  template <int dim>
+  std::vector<PlyStress>
+  Simulator<dim>::cell_stresses(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const std::vector<Point<dim>>                        &unit_points,
+    const Vector                                         &state) const
+  {
+    FEValues<dim> values(dof_layer.get_mapping(),
+                         dof_layer.get_fe(),
+                         Quadrature<dim>(unit_points),
+                         update_gradients);
+    values.reinit(cell);
+    std::vector<types::global_dof_index> dofs(
+      dof_layer.get_fe().n_dofs_per_cell());
+    dof_layer.get_dof_indices(cell, dofs);
+    const FEValuesExtractors::Vector displacement(0);
+    std::vector<PlyStress>           result;
+    for (unsigned int q = 0; q < unit_points.size(); ++q)
+      {
+        SymmetricTensor<2, dim> strain;
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          strain
+            += state(dofs[i]) * values[displacement].symmetric_gradient(i, q);
+        result.push_back(
+          evaluate_ply_stress(plies[cell->material_id()], strain));
+      }
+    return result;
+  }
+
+
+
+  template <int dim>
+  std::vector<typename Simulator<dim>::FailingFace>
+  Simulator<dim>::faces_to_crack() const
+  {
+    constexpr unsigned int  n_faces = GeometryInfo<dim>::faces_per_cell;
+    std::vector<Point<dim>> centres(n_faces);
+    for (unsigned int f = 0; f < n_faces; ++f)
+      for (unsigned int d = 0; d < dim; ++d)
+        centres[f][d] = d == f / 2 ? double(f % 2) : 0.5;
+
+    // Round 1: each rank's cells at the centres of their candidate faces;
+    // a face fails if the mean of its two sides does, and then (the
+    // Hoffman index being convex) at least one side fails on its own.
+    std::map<FaceKey, PlyStress> sides;
+    std::vector<unsigned int>    local_failing;
+    for (const auto &cell : dof_layer.copy_handler().active_cell_iterators())
+      {
+        if (!cell->is_locally_owned())
+          continue;
+        std::vector<unsigned int> faces;
+        for (unsigned int f = 0; f < n_faces; ++f)
+          if (crack_candidate(cell, f))
+            faces.push_back(f);
+        if (faces.empty())
+          continue;
+        const auto stresses = cell_stresses(cell, centres, relevant_solution);
+        for (const unsigned int f : faces)
+          {
+            sides[key_of<dim>(cell, f)] = stresses[f];
+            const double scale
+              = crack_strength_scale->value(cell->face(f)->center());
+            const auto &strengths = plies[cell->material_id()].strengths;
+            if (scale > 0
+                && hoffman_index(stresses[f].material, scaled(strengths, scale))
+                     < hoffman_limit)
+              continue;
+            const FaceKey key = lower_key<dim>(cell, f);
+            local_failing.insert(local_failing.end(), key.begin(), key.end());
+          }
+      }
+    std::set<FaceKey> failing_set;
+    for (const auto &part : Utilities::MPI::all_gather(comm, local_failing))
+      for (std::size_t i = 0; i + 4 < part.size(); i += 5)
+        failing_set.insert(
+          {{part[i], part[i + 1], part[i + 2], part[i + 3], part[i + 4]}});
+    if (failing_set.empty())
+      return {};
+    const std::vector<FaceKey> failing(failing_set.begin(), failing_set.end());
+
+    // Round 2: both sides of every failing face, from their owners.
+    const auto cell_of = [&](const FaceKey &key) {
+      return triangulation.create_cell_iterator(
+        CellId(std::array<unsigned int, 4>{{key[0], key[1], key[2], key[3]}}));
+    };
+    std::vector<double> contributions;
+    for (unsigned int i = 0; i < failing.size(); ++i)
+      {
+        const auto         cell     = cell_of(failing[i]);
+        const unsigned int f        = failing[i][4];
+        const auto         neighbor = cell->neighbor(f);
+        for (const FaceKey &side :
+             {failing[i], key_of<dim>(neighbor, cell->neighbor_of_neighbor(f))})
+          {
+            const auto found = sides.find(side);
+            if (found == sides.end())
+              continue;
+            contributions.push_back(i);
+            for (const auto &pair : voigt_pairs)
+              contributions.push_back(found->second.material[pair[0]][pair[1]]);
+            for (const auto &pair : voigt_pairs)
+              contributions.push_back(found->second.model[pair[0]][pair[1]]);
+          }
+      }
+    std::vector<SymmetricTensor<2, 3>> material(failing.size()),
+      model(failing.size());
+    std::vector<unsigned int> n_sides(failing.size(), 0);
+    for (const auto &part : Utilities::MPI::all_gather(comm, contributions))
+      for (std::size_t j = 0; j + 12 < part.size(); j += 13)
+        {
+          const auto i = static_cast<unsigned int>(part[j]);
+          ++n_sides[i];
+          for (unsigned int v = 0; v < 6; ++v)
+            {
+              material[i][voigt_pairs[v][0]][voigt_pairs[v][1]]
+                += 0.5 * part[j + 1 + v];
+              model[i][voigt_pairs[v][0]][voigt_pairs[v][1]]
+                += 0.5 * part[j + 7 + v];
+            }
+        }
+
+    // The same on every rank: index, normal and alignment of each face.
+    std::vector<FailingFace> candidates;
+    for (unsigned int i = 0; i < failing.size(); ++i)
+      {
+        if (n_sides[i] != 2)
+          continue;
+        const auto         cell   = cell_of(failing[i]);
+        const unsigned int f      = failing[i][4];
+        const Point<dim>   centre = cell->face(f)->center();
+        const double       scale  = crack_strength_scale->value(centre);
+        if (!(scale > 0))
+          {
+            std::ostringstream where;
+            where << "is " << scale << " at " << centre
+                  << ": strengths must stay positive";
+            throw InputError("Crack insertion/Strength scale", where.str());
+          }
+        const Strengths strengths
+          = scaled(plies[cell->material_id()].strengths, scale);
+        const double index = hoffman_index(material[i], strengths);
+        if (index < hoffman_limit)
+          continue;
+        const Tensor<1, dim>          n      = face_normal<dim>(cell, f);
+        const SymmetricTensor<2, dim> stress = model_block<dim>(model[i]);
+        const Tensor<1, dim>          t      = stress * n;
+        const double                  normal = t * n;
+        const double tau     = std::sqrt(std::pow(std::max(normal, 0.), 2)
+                                     + (t - normal * n).norm_square());
+        const double largest = std::max({strengths.Xt,
+                                         strengths.Xc,
+                                         strengths.Yt,
+                                         strengths.Yc,
+                                         strengths.S12});
+        if (!(tau > traction_fraction * largest))
+          continue;
+        // The critical plane: normal to the largest principal stress if it
+        // is tensile, else the plane of the largest shear.
+        const auto     principal = eigenvectors(stress);
+        Tensor<1, dim> e         = principal[0].second;
+        if (!(principal[0].first > 0))
+          {
+            e = principal[0].second + principal[dim - 1].second;
+            e /= e.norm();
+          }
+        candidates.push_back({cell, f, index, std::abs(n * e)});
+      }
+
+    // Each cell nominates its failing face best aligned with the critical
+    // plane (then the larger index, then the smaller key).
+    const auto better = [](const FailingFace &a, const FailingFace &b) {
+      if (std::abs(a.alignment - b.alignment) > 1e-9)
+        return a.alignment > b.alignment;
+      return a.hoffman > b.hoffman;
+    };
+    std::map<CellId, unsigned int> best;
+    for (unsigned int j = 0; j < candidates.size(); ++j)
+      {
+        const auto &c = candidates[j];
+        for (const CellId id : {c.cell->id(), c.cell->neighbor(c.face)->id()})
+          {
+            const auto found = best.find(id);
+            if (found == best.end() || better(c, candidates[found->second]))
+              best[id] = j;
+          }
+      }
+    std::set<unsigned int> nominated;
+    for (const auto &entry : best)
+      nominated.insert(entry.second);
+    std::vector<FailingFace> result;
+    for (const unsigned int j : nominated)
+      result.push_back(candidates[j]);
+    // The most critical first; candidates are in key order, and the sort
+    // is stable, so equal indices keep it.
+    std::stable_sort(result.begin(),
+                     result.end(),
+                     [](const FailingFace &a, const FailingFace &b) {
+                       return a.hoffman > b.hoffman;
+                     });
+    if (result.size() > parameters.cracks.faces_per_round)
+      result.resize(parameters.cracks.faces_per_round);
+    return result;
+  }
+
+
+
+  template <int dim>
+  typename Simulator<dim>::InsertionReport
+  Simulator<dim>::insert_cracks(const double t_previous,
+                                const double t,
+                                const bool   check_onset)
+  {
+    std::vector<FailingFace> chosen;
+    {
+      TimerOutput::Scope scope(timer, "crack check");
+      chosen = faces_to_crack();
+    }
+    InsertionReport result;
+    if (chosen.empty())
+      return result;
+    result.hoffman = chosen.front().hoffman;
+    if (check_onset && result.hoffman > 1 + parameters.cracks.onset_tolerance)
+      {
+        result.overshoot = true;
+        return result;
+      }
+    TimerOutput::Scope scope(timer, "crack insertion");
+    for (const FailingFace &face : chosen)
+      interfaces->add_crack(face.cell, face.face);
+
+    // The copies do not change: only the ties do. Carry both states
+    // through them.
+    dealii::Vector<double> trial_copies, converged_copies;
+    dof_layer.expand_all(dof_layer.replicate(solution), trial_copies);
+    dof_layer.expand_all(dof_layer.replicate(newton->converged_solution),
+                         converged_copies);
+    rebuild_after_mesh_change();
+    Vector trial(dof_layer.locally_owned_dofs(), comm);
+    dof_layer.gather(trial_copies, trial);
+    make_constraints(t, constraints, false);
+    constraints.distribute(trial);
+    Vector converged(dof_layer.locally_owned_dofs(), comm);
+    dof_layer.gather(converged_copies, converged);
+    make_constraints(t_previous, constraints, false);
+    constraints.distribute(converged);
+    // Both states with the ghosts of the new numbering: a crack starts
+    // from the converged state's traction, the trial state's sets its
+    // onset.
+    const auto ghosted = [&](const Vector &owned) {
+      Vector v(dof_layer.locally_owned_dofs(),
+               dof_layer.locally_relevant_dofs(),
+               comm);
+      v = owned;
+      return v;
+    };
+    const Vector relevant_trial     = ghosted(trial);
+    const Vector relevant_converged = ghosted(converged);
+    const auto  &mapping            = dof_layer.get_mapping();
+    const auto   traction
+      = [&](const typename DoFHandler<dim>::active_cell_iterator &lower,
+            const typename DoFHandler<dim>::active_cell_iterator &upper,
+            const Point<dim>                                     &point,
+            const Tensor<1, dim>                                 &normal,
+            const bool                                            at_onset) {
+          const Vector &state = at_onset ? relevant_trial : relevant_converged;
+          const auto    a
+            = cell_stresses(lower,
+                            {mapping.transform_real_to_unit_cell(lower, point)},
+                            state)[0];
+          const auto b
+            = cell_stresses(upper,
+                            {mapping.transform_real_to_unit_cell(upper, point)},
+                            state)[0];
+          return model_block<dim>(0.5 * (a.model + b.model)) * normal;
+        };
+    const auto toughness
+      = [&](const typename DoFHandler<dim>::active_cell_iterator &cell) {
+          return plies[cell->material_id()].fracture_energy;
+        };
+    const auto report = interfaces->rebuild(dof_layer, traction, toughness);
+    // The matrix pattern takes the couplings of the new crack elements.
+    const double external_work = newton->external_work;
+    setup_newton();
+    newton->external_work = external_work;
+    solution              = trial;
+
+    // The reactions of the converged state on the new numbering start the
+    // trapezoidal rule of the external work of the step solved again.
+    newton->converged_solution = converged;
+    assembler.assemble_load(loads, t_previous, newton->external_load);
+    update_residual(newton->converged_solution, nullptr);
+    newton->previous_residual = newton->residual;
+    newton->previous_load     = newton->external_load;
+    solver_ready              = false;
+
+    std::ostringstream line;
+    line << "  t=" << t << ": " << chosen.size()
+         << " face(s) cracked (Hoffman index up to " << chosen.front().hoffman
+         << "), " << report.new_points << " interface points, "
+         << interfaces->n_crack_faces() << " crack faces in all, "
+         << dof_layer.n_dofs() << " unknowns";
+    pcout << line.str() << std::endl;
+    result.inserted = chosen.size();
+    return result;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Simulator<dim>::count_fragments() const
+  {
+    std::set<std::pair<CellId, unsigned int>> separated;
+    for (const auto &[id, f] : interfaces->separated_faces(comm))
+      {
+        const auto cell = triangulation.create_cell_iterator(id);
+        separated.insert({id, f});
+        separated.insert(
+          {cell->neighbor(f)->id(), cell->neighbor_of_neighbor(f)});
+      }
+    std::vector<unsigned int> parent(triangulation.n_active_cells());
+    std::iota(parent.begin(), parent.end(), 0u);
+    const auto root = [&](unsigned int i) {
+      while (parent[i] != i)
+        i = parent[i] = parent[parent[i]];
+      return i;
+    };
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        {
+          if (cell->at_boundary(f) || cell->neighbor(f)->has_children()
+              || separated.count({cell->id(), f}) > 0)
+            continue;
+          const unsigned int a   = root(cell->active_cell_index());
+          const unsigned int b   = root(cell->neighbor(f)->active_cell_index());
+          parent[std::max(a, b)] = std::min(a, b);
+        }
+    unsigned int n = 0;
+    for (unsigned int i = 0; i < parent.size(); ++i)
+      n += root(i) == i ? 1 : 0;
+    return n;
+  }
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace amfrac
