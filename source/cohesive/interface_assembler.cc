@@ -725,13 +725,14 @@ namespace amfrac
               l.dissipated += (s.bond_work + s.inserted - stored) * JxW;
             if (s.history.kappa > 0)
               l.damaged += JxW;
-            l.min_opening = std::min(l.min_opening, s.gap[0]);
+            l.min_opening = std::min(l.min_opening, s.gap[0] + s.offset[0]);
           }
       }
     for (Ledger &l : result)
       {
         double *sums[] = {&l.work,
                           &l.stored,
+                          &l.viscous,
                           &l.dissipated,
                           &l.friction,
                           &l.debonded,

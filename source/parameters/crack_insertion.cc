@@ -48,7 +48,10 @@ namespace amfrac
         Patterns::Anything(),
         "Expression of x, y, z: the ply strengths at a face centre are "
         "multiplied by it (a flaw, a weakened section, or a random "
-        "strength field with rand_seed()); must be positive.");
+        "strength field with rand_seed(s)); must be positive. Evaluated once "
+        "per face when the scene is set up, in the same order on every "
+        "rank, so a random field is one fixed field on any number of "
+        "ranks.");
       prm.declare_entry("Penalty stiffness",
                         "1e6",
                         Patterns::Double(0),
@@ -101,6 +104,9 @@ namespace amfrac
       const std::string list = prm.get("Plies");
       prm.leave_subsection();
       plies.clear();
+      require(!list.empty(),
+              "Crack insertion/Plies",
+              "give 'all' or a list of ply indices");
       if (list != "all")
         {
           for (const std::string &entry : Utilities::split_string_list(list))

@@ -1565,6 +1565,9 @@ namespace amfrac
                                                            "dissipation or "
                                                            "opening"));
       refuse(buckling.active(), "Buckling/Number of modes > 0");
+      refuse(!geometry.refinement_region.empty(),
+             "Geometry/Refinement region (a crack cannot open at a hanging "
+             "node yet)");
       // (Every minutes is on by default: such a run writes none.)
       refuse(checkpoint.by_count_or_stop() || checkpoint.resume,
              "checkpoints (Checkpoint/Every n steps, Stop after step, "

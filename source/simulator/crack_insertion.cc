@@ -3,6 +3,7 @@
 // load step, the choice of the faces, their release in the tied-copy DoF
 // layer and the move of the Newton state to the new numbering.
 #include <algorithm>
+#include <amfrac/parameters/expressions.h>
 #include <amfrac/parameters/input_error.h>
 #include <amfrac/simulator/simulator.h>
 #include <array>
@@ -92,6 +93,45 @@ namespace amfrac
 
 
   template <int dim>
+  void
+  Simulator<dim>::evaluate_strength_scale()
+  {
+    const auto scale
+      = make_expression_function<dim>({parameters.cracks.strength_scale},
+                                      1,
+                                      parameters.boundary_conditions.constants,
+                                      "Crack insertion/Strength scale");
+    constexpr unsigned int n_faces = GeometryInfo<dim>::faces_per_cell;
+    crack_strength_scale.assign(triangulation.n_active_cells() * n_faces, 1.);
+    // Every rank visits every face of the replicated mesh in the same
+    // order, once (from its lower cell), and both sides share the value.
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (unsigned int f = 0; f < n_faces; ++f)
+        {
+          if (cell->at_boundary(f) || !cell->neighbor(f)->is_active()
+              || cell->neighbor_is_coarser(f)
+              || !(cell->id() < cell->neighbor(f)->id()))
+            continue;
+          const Point<dim> centre = cell->face(f)->center();
+          const double     value  = scale->value(centre);
+          if (!(value > 0) || !std::isfinite(value))
+            {
+              std::ostringstream where;
+              where << "is " << value << " at " << centre
+                    << ": strengths must stay positive and finite";
+              throw InputError("Crack insertion/Strength scale", where.str());
+            }
+          const auto neighbor = cell->neighbor(f);
+          crack_strength_scale[cell->active_cell_index() * n_faces + f] = value;
+          crack_strength_scale[neighbor->active_cell_index() * n_faces
+                               + cell->neighbor_of_neighbor(f)]
+            = value;
+        }
+  }
+
+
+
+  template <int dim>
   bool
   Simulator<dim>::crack_candidate(
     const typename Triangulation<dim>::cell_iterator &cell,
@@ -133,7 +173,9 @@ namespace amfrac
               return false;
           }
       }
-    return crack_region->value(cell->face(f)->center()) != 0.;
+    // A region expression that is not finite there (NaN) selects nothing.
+    const double inside = crack_region->value(cell->face(f)->center());
+    return std::isfinite(inside) && inside != 0.;
   }
 
 
@@ -199,11 +241,10 @@ namespace amfrac
           {
             sides[key_of<dim>(cell, f)] = stresses[f];
             const double scale
-              = crack_strength_scale->value(cell->face(f)->center());
+              = crack_strength_scale[cell->active_cell_index() * n_faces + f];
             const auto &strengths = plies[cell->material_id()].strengths;
-            if (scale > 0
-                && hoffman_index(stresses[f].material, scaled(strengths, scale))
-                     < hoffman_limit)
+            if (hoffman_index(stresses[f].material, scaled(strengths, scale))
+                < hoffman_limit)
               continue;
             const FaceKey key = lower_key<dim>(cell, f);
             local_failing.insert(local_failing.end(), key.begin(), key.end());
@@ -268,14 +309,8 @@ namespace amfrac
         const auto         cell   = cell_of(failing[i]);
         const unsigned int f      = failing[i][4];
         const Point<dim>   centre = cell->face(f)->center();
-        const double       scale  = crack_strength_scale->value(centre);
-        if (!(scale > 0))
-          {
-            std::ostringstream where;
-            where << "is " << scale << " at " << centre
-                  << ": strengths must stay positive";
-            throw InputError("Crack insertion/Strength scale", where.str());
-          }
+        const double       scale
+          = crack_strength_scale[cell->active_cell_index() * n_faces + f];
         const Strengths strengths
           = scaled(plies[cell->material_id()].strengths, scale);
         const double index = hoffman_index(material[i], strengths);

@@ -793,6 +793,8 @@ namespace amfrac
     const double      target
       = p.opening_control ? p.opening_increment : p.dissipation_increment;
     double dtau = target;
+    // Crack insertion: faces still failing after the last step's rounds.
+    bool failures_left = false;
     // Steps done before a restart (to tell whether this run did any).
     std::size_t progress_at_restart = 0;
     if (restart)
@@ -885,13 +887,16 @@ namespace amfrac
                       << " insertion rounds (Crack insertion/Rounds per "
                          "step); faces still failing wait for the next step"
                       << std::endl;
+                failures_left = true;
                 break;
               }
             // The first round may ask for a shorter step, so that a crack
             // starts at its strength; later rounds follow what the
             // inserted cracks set off.
+            // Not when faces were left failing at t (Rounds per step):
+            // they fail at any step length.
             const bool can_cut
-              = rounds == 0
+              = rounds == 0 && !failures_left
                 && 0.5 * (trial_t - t) >= p.minimum_step_fraction * nominal;
             const auto inserted = insert_cracks(t, trial_t, can_cut);
             if (inserted.overshoot)
@@ -906,7 +911,10 @@ namespace amfrac
                 break;
               }
             if (inserted.inserted == 0)
-              break;
+              {
+                failures_left = false;
+                break;
+              }
             ++rounds;
             report = solve_newton_step(trial_t, solver);
           }

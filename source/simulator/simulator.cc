@@ -40,11 +40,7 @@ namespace amfrac
                                                      1,
                                                      constants,
                                                      "Crack insertion/Region");
-        crack_strength_scale
-          = make_expression_function<dim>({parameters.cracks.strength_scale},
-                                          1,
-                                          constants,
-                                          "Crack insertion/Strength scale");
+        evaluate_strength_scale();
       }
     if (parameters.total_lagrangian)
       finite_strain

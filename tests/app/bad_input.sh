@@ -455,6 +455,16 @@ end
 subsection Checkpoint
   set Every n steps = 2
 end"
+expect crack_strength_scale "Crack insertion/Strength scale" "$base
+subsection Boundary conditions
+  subsection x-
+    set Type = displacement
+  end
+end
+subsection Crack insertion
+  set Criterion      = hoffman
+  set Strength scale = x - 100
+end"
 expect crack_toughness "Materials/Gc" "$base
 subsection Materials
   set Gc = 0

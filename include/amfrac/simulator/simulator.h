@@ -193,10 +193,17 @@ namespace amfrac
     std::unique_ptr<FieldOutput<dim>>        field_output;
     std::unique_ptr<InterfaceOutput<dim>>    interface_output;
     std::unique_ptr<CohesiveInterfaces<dim>> interfaces;
-    /** Crack insertion: where faces may crack and the strength factor
-     * (nullptr without crack insertion). */
+    /** Crack insertion: where faces may crack (nullptr without crack
+     * insertion), and the strength factor of every face (face f of active
+     * cell c at c * faces_per_cell + f), evaluated once in a fixed order
+     * on every rank, so that a random field (rand_seed()) is one fixed
+     * field, the same on all ranks. */
     std::shared_ptr<Function<dim>> crack_region;
-    std::shared_ptr<Function<dim>> crack_strength_scale;
+    std::vector<double>            crack_strength_scale;
+    /** Evaluate Crack insertion/Strength scale on every interior face
+     * (InputError unless positive and finite). */
+    void
+    evaluate_strength_scale();
 
     AffineConstraints<double> constraints;
     /** Per prescribed condition: the reduced dofs on its face (and Where)
