@@ -65,6 +65,49 @@ namespace amfrac
 
 
   template <int dim>
+  std::vector<std::int64_t>
+  CohesiveInterfaces<dim>::crack_keys() const
+  {
+    // Both sides of every face (the set holds both): add_cracks() releases
+    // each face from either side, so nothing needs the neighbour here.
+    std::vector<std::int64_t> keys;
+    for (const auto &[id, face] : cracked)
+      {
+        const auto binary = id.template to_binary<dim>();
+        keys.insert(keys.end(), binary.begin(), binary.end());
+        keys.push_back(face);
+      }
+    return keys;
+  }
+
+
+
+  template <int dim>
+  void
+  CohesiveInterfaces<dim>::add_cracks(const Triangulation<dim>        &tria,
+                                      const std::vector<std::int64_t> &keys)
+  {
+    for (std::size_t i = 0; i + 4 < keys.size(); i += 5)
+      {
+        std::array<unsigned int, 4> binary;
+        for (unsigned int k = 0; k < 4; ++k)
+          binary[k] = static_cast<unsigned int>(keys[i + k]);
+        const auto   face = static_cast<unsigned int>(keys[i + 4]);
+        const CellId id(binary);
+        const auto   cell = tria.create_cell_iterator(id);
+        if (!cell->is_active() || face >= cell->n_faces()
+            || cell->at_boundary(face) || !cell->neighbor(face)->is_active()
+            || cell->neighbor_is_coarser(face))
+          throw InputError("the checkpoint's crack faces do not fit the "
+                           "mesh of these parameters: the checkpoint is of "
+                           "another scene");
+        add_crack(cell, face);
+      }
+  }
+
+
+
+  template <int dim>
   cohesive::CamanhoDavilaProperties
   CohesiveInterfaces<dim>::crack_law(const PointState &state) const
   {

@@ -1568,10 +1568,6 @@ namespace amfrac
       refuse(!geometry.refinement_region.empty(),
              "Geometry/Refinement region (a crack cannot open at a hanging "
              "node yet)");
-      // (Every minutes is on by default: such a run writes none.)
-      refuse(checkpoint.by_count_or_stop() || checkpoint.resume,
-             "checkpoints (Checkpoint/Every n steps, Stop after step, "
-             "Resume: a checkpoint does not keep the inserted cracks yet)");
     }
 
 

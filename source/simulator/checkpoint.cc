@@ -217,6 +217,10 @@ namespace amfrac
     run.put_integer("cycle", cycle);
     run.put_integers("mesh.changes", mesh_changes);
     run.put_integer("mesh.active_cells", triangulation.n_active_cells());
+    // Inserted cracks: the DoF layer of a restart releases them before
+    // the interface history is read back.
+    if (interfaces && interfaces->cracks_enabled())
+      run.put_integers("cracks", interfaces->crack_keys());
     save_table(run, "history", *summary);
     if (cycle_summary)
       save_table(run, "adaptivity", *cycle_summary);
@@ -325,7 +329,12 @@ namespace amfrac
                        + " cells, the mesh of these parameters refined like it "
                        + std::to_string(triangulation.n_active_cells())
                        + ": the checkpoint is of another scene");
-    if (changes.empty())
+    const bool cracked = interfaces && interfaces->cracks_enabled()
+                         && run.has("cracks")
+                         && !run.get_integers("cracks").empty();
+    if (cracked)
+      interfaces->add_cracks(triangulation, run.get_integers("cracks"));
+    if (changes.empty() && !cracked)
       return;
     setup_after_refinement();
     if (interfaces)
@@ -338,11 +347,6 @@ namespace amfrac
   void
   Simulator<dim>::resume(const CheckpointStore::Contents &checkpoint)
   {
-    if (parameters.cracks.active)
-      throw InputError("Crack insertion/Criterion",
-                       "a run with crack insertion cannot resume from a "
-                       "checkpoint yet (checkpoints do not keep the "
-                       "inserted cracks)");
     restart = std::make_unique<CheckpointStore::Contents>(checkpoint);
     reading(checkpoint.folder, comm, [&]() {
       restore_mesh(checkpoint.run);

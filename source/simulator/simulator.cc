@@ -395,11 +395,8 @@ namespace amfrac
                        "on at least one face");
     // Refinement cycles repeat the whole run per mesh: they neither
     // checkpoint nor resume (the parameters refuse Every n steps there).
-    // Inserted cracks are not in checkpoints yet (the parameters refuse
-    // the Checkpoint subsection with them), so no signal writes one.
-    const bool resumable = (parameters.time.explicit_dynamics || interfaces
-                            || finite_strain || !parameters.adaptivity.active())
-                           && !parameters.cracks.active;
+    const bool resumable = parameters.time.explicit_dynamics || interfaces
+                           || finite_strain || !parameters.adaptivity.active();
     if (restart && !resumable)
       throw InputError("Adaptivity/Refinement cycles",
                        "a run with refinement cycles cannot resume from a "

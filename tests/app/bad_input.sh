@@ -448,13 +448,6 @@ subsection Crack insertion
   set Criterion = hoffman
   set Region    = x <
 end"
-expect crack_checkpoint "Crack insertion/Criterion" "$base
-subsection Crack insertion
-  set Criterion = hoffman
-end
-subsection Checkpoint
-  set Every n steps = 2
-end"
 expect crack_strength_scale "Crack insertion/Strength scale" "$base
 subsection Boundary conditions
   subsection x-

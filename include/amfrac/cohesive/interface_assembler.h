@@ -68,6 +68,19 @@ namespace amfrac
     add_crack(const typename Triangulation<dim>::cell_iterator &cell,
               const unsigned int                                face);
 
+    /** The inserted crack faces, from both sides (CellId binary, 4
+     * numbers, and the face), the same on every rank: what a checkpoint
+     * keeps. */
+    std::vector<std::int64_t>
+    crack_keys() const;
+
+    /** Release the faces of crack_keys() output (a checkpoint's) on the
+     * mesh @p triangulation; throws InputError if one is not a regular
+     * interior face there (the checkpoint is of another scene). */
+    void
+    add_cracks(const Triangulation<dim>        &triangulation,
+               const std::vector<std::int64_t> &keys);
+
     /** Number of inserted crack faces (each once, all ranks: the set is
      * replicated). */
     std::size_t
