@@ -184,20 +184,16 @@ namespace amfrac
   std::vector<PlyStress>
   Simulator<dim>::cell_stresses(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
-    const std::vector<Point<dim>>                        &unit_points,
+    FEValues<dim>                                        &values,
     const Vector                                         &state) const
   {
-    FEValues<dim> values(dof_layer.get_mapping(),
-                         dof_layer.get_fe(),
-                         Quadrature<dim>(unit_points),
-                         update_gradients);
     values.reinit(cell);
     std::vector<types::global_dof_index> dofs(
       dof_layer.get_fe().n_dofs_per_cell());
     dof_layer.get_dof_indices(cell, dofs);
     const FEValuesExtractors::Vector displacement(0);
     std::vector<PlyStress>           result;
-    for (unsigned int q = 0; q < unit_points.size(); ++q)
+    for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
       {
         SymmetricTensor<2, dim> strain;
         for (unsigned int i = 0; i < dofs.size(); ++i)
@@ -224,6 +220,12 @@ namespace amfrac
     // Round 1: each rank's cells at the centres of their candidate faces;
     // a face fails if the mean of its two sides does, and then (the
     // Hoffman index being convex) at least one side fails on its own.
+    // One FEValues for all cells: the face centres in reference
+    // coordinates are the same for every cell.
+    FEValues<dim>                at_centres(dof_layer.get_mapping(),
+                             dof_layer.get_fe(),
+                             Quadrature<dim>(centres),
+                             update_gradients);
     std::map<FaceKey, PlyStress> sides;
     std::vector<unsigned int>    local_failing;
     for (const auto &cell : dof_layer.copy_handler().active_cell_iterators())
@@ -236,7 +238,8 @@ namespace amfrac
             faces.push_back(f);
         if (faces.empty())
           continue;
-        const auto stresses = cell_stresses(cell, centres, relevant_solution);
+        const auto stresses
+          = cell_stresses(cell, at_centres, relevant_solution);
         for (const unsigned int f : faces)
           {
             sides[key_of<dim>(cell, f)] = stresses[f];
@@ -431,22 +434,27 @@ namespace amfrac
     const Vector relevant_trial     = ghosted(trial);
     const Vector relevant_converged = ghosted(converged);
     const auto  &mapping            = dof_layer.get_mapping();
-    const auto   traction
+    const auto   stress_at          = [&](const auto       &cell,
+                               const Point<dim> &point,
+                               const Vector     &state) {
+      FEValues<dim> values(mapping,
+                           dof_layer.get_fe(),
+                           Quadrature<dim>(std::vector<Point<dim>>{
+                             mapping.transform_real_to_unit_cell(cell, point)}),
+                           update_gradients);
+      return cell_stresses(cell, values, state)[0].model;
+    };
+    const auto traction
       = [&](const typename DoFHandler<dim>::active_cell_iterator &lower,
             const typename DoFHandler<dim>::active_cell_iterator &upper,
             const Point<dim>                                     &point,
             const Tensor<1, dim>                                 &normal,
             const bool                                            at_onset) {
           const Vector &state = at_onset ? relevant_trial : relevant_converged;
-          const auto    a
-            = cell_stresses(lower,
-                            {mapping.transform_real_to_unit_cell(lower, point)},
-                            state)[0];
-          const auto b
-            = cell_stresses(upper,
-                            {mapping.transform_real_to_unit_cell(upper, point)},
-                            state)[0];
-          return model_block<dim>(0.5 * (a.model + b.model)) * normal;
+          return model_block<dim>(0.5
+                                  * (stress_at(lower, point, state)
+                                     + stress_at(upper, point, state)))
+                 * normal;
         };
     const auto toughness
       = [&](const typename DoFHandler<dim>::active_cell_iterator &cell) {

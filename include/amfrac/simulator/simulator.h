@@ -509,12 +509,13 @@ namespace amfrac
       bool   overshoot = false;
       double hoffman   = 0;
     };
-    /** The stresses of @p cell (owned, or across a released face) at
-     * @p unit_points from @p state (locally relevant entries). */
+    /** The stresses of @p cell (owned, or across a released face) at the
+     * quadrature points of @p values (gradients, reinitialized here) from
+     * @p state (locally relevant entries). */
     std::vector<PlyStress>
     cell_stresses(const typename DoFHandler<dim>::active_cell_iterator &cell,
-                  const std::vector<Point<dim>> &unit_points,
-                  const Vector                  &state) const;
+                  FEValues<dim>                                        &values,
+                  const Vector &state) const;
     /** After the converged Newton state at @p t (from @p t_previous):
      * insert the faces of faces_to_crack(), rebuild the DoF layer, the
      * interface elements and the Newton state, and move both states to
