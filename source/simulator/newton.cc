@@ -731,7 +731,8 @@ namespace amfrac
         // "..._cracks".
         const bool        crack = k == interfaces->interfaces().size();
         const std::string name
-          = crack ? "_cracks" : "_i" + interfaces->ledger_name(k);
+          = crack ? "_cracks" :
+                    "_i" + std::to_string(interfaces->interfaces()[k]);
         interface_work += ledger[k].work;
         interface_storage += ledger[k].stored;
         columns.emplace_back("dissipated" + name, ledger[k].dissipated);

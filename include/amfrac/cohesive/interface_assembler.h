@@ -132,13 +132,6 @@ namespace amfrac
     std::vector<std::pair<CellId, unsigned int>>
     separated_faces(const MPI_Comm comm) const;
 
-    /** The name of ledger entry @p k: the interface index, or "cracks". */
-    std::string
-    ledger_name(const unsigned int k) const
-    {
-      return k < data.interfaces.size() ? std::to_string(data.interfaces[k]) :
-                                          std::string("cracks");
-    }
 
     /** The faces that the DoF layer must leave untied. */
     typename TiedCopyDoFs<dim>::FaceFilter
