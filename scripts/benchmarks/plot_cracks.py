@@ -1,9 +1,11 @@
 """Figures of tutorial step 11 (crack insertion).
 
-usage: /usr/bin/python3 scripts/benchmarks/plot_cracks.py BAR_DIR BEAM_DIR OUT_DIR
-  BAR_DIR:  output of prm/cracked_bar_2d.prm
-  BEAM_DIR: output of prm/cracked_beam_2d.prm (may be '-': skipped)
-Writes OUT_DIR/splitting.png (the node-splitting rule), bar.png and beam.png.
+usage: /usr/bin/python3 scripts/benchmarks/plot_cracks.py BAR_DIR BEAM_DIR OUT_DIR [PLATE_DIR]
+  BAR_DIR:   output of prm/cracked_bar_2d.prm
+  BEAM_DIR:  output of prm/cracked_beam_2d.prm (may be '-': skipped)
+  PLATE_DIR: output of prm/fragmenting_plate.prm (optional)
+Writes OUT_DIR/splitting.png (the node-splitting rule), bar.png, beam.png
+and fragmentation.png.
 """
 import csv
 import sys
@@ -100,9 +102,43 @@ def beam(directory, out):
     fig.savefig(f"{out}/beam.png", dpi=110)
 
 
+def fragmentation(directory, out):
+    """Crack faces, fragments and the energies of the explicit plate."""
+    h = read(directory + "/history.csv")
+    events = read(directory + "/cracks.csv")
+    t = [1e6 * x for x in h["time"]]
+    fig, (a, b) = plt.subplots(1, 2, figsize=(10, 3.8))
+    a.plot(t, h["crack_faces"], label="crack faces")
+    a.bar([1e6 * x for x in events["time"]], events["faces"], width=0.02,
+          color="tab:gray", label="faces inserted per event")
+    a.set_xlabel("t [us]")
+    a.set_ylabel("faces")
+    a2 = a.twinx()
+    a2.step(t, h["fragments"], where="post", color="tab:red")
+    a2.set_ylabel("fragments", color="tab:red")
+    a.legend(loc="center right", fontsize=8)
+    a.set_title("insertion and fragments")
+    for name, label in [("kinetic_energy", "kinetic"),
+                        ("strain_energy", "strain"),
+                        ("dissipated_cracks", "dissipated by cracks"),
+                        ("interface_stored", "held by crack faces")]:
+        b.plot(t, h[name], label=label)
+    b.plot(t, [abs(x) for x in h["balance_error"]], "k--",
+           label="|balance error|")
+    b.set_yscale("symlog", linthresh=1e-2)
+    b.set_xlabel("t [us]")
+    b.set_ylabel("N mm")
+    b.legend(fontsize=8)
+    b.set_title("energy ledger")
+    fig.tight_layout()
+    fig.savefig(out + "/fragmentation.png", dpi=120)
+
+
 if __name__ == "__main__":
     bar_dir, beam_dir, out = sys.argv[1:4]
     splitting(out)
     bar(bar_dir, out)
     if beam_dir != "-":
         beam(beam_dir, out)
+    if len(sys.argv) > 4:
+        fragmentation(sys.argv[4], out)

@@ -546,7 +546,7 @@ namespace amfrac
      * with Gauss-Lobatto on the nodes (@p lobatto reinitialized on it). */
     template <int dim>
     void
-    element_lumped_mass(const FEValues<dim>    &lobatto,
+    lobatto_lumped_mass(const FEValues<dim>    &lobatto,
                         const double            density,
                         dealii::Vector<double> &m)
     {
@@ -583,10 +583,24 @@ namespace amfrac
         {
           fe_values.reinit(cell);
           dofs.get_dof_indices(cell, indices);
-          element_lumped_mass(fe_values, plies[cell->material_id()].density, m);
+          lobatto_lumped_mass(fe_values, plies[cell->material_id()].density, m);
           mass.add(indices, m);
         }
     mass.compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticAssembler<dim>::element_lumped_mass(
+    const typename TiedCopyDoFs<dim>::CellIterator &cell,
+    dealii::Vector<double>                         &mass) const
+  {
+    FEValues<dim> lobatto = lobatto_values(dofs.get_mapping(), dofs.get_fe());
+    lobatto.reinit(cell);
+    mass.reinit(dofs.get_fe().n_dofs_per_cell());
+    lobatto_lumped_mass(lobatto, plies[cell->material_id()].density, mass);
   }
 
 
@@ -617,7 +631,7 @@ namespace amfrac
     FEValues<dim> lobatto = lobatto_values(dofs.get_mapping(), fe);
     lobatto.reinit(cell);
     dealii::Vector<double> m(n);
-    element_lumped_mass(lobatto, plies[cell->material_id()].density, m);
+    lobatto_lumped_mass(lobatto, plies[cell->material_id()].density, m);
     // Largest eigenvalue of M^-1/2 K M^-1/2 (symmetric, positive
     // semi-definite): a dense eigenproblem of the element's size.
     LAPACKFullMatrix<double> A(n, n);

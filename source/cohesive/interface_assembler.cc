@@ -749,24 +749,105 @@ namespace amfrac
   void
   CohesiveInterfaces<dim>::add_penalty_row_sums(Vector &row_sums) const
   {
-    const double shear = data.shear_stiffness;
-    const double k
-      = std::max({data.normal_stiffness,
-                  shear,
-                  data.contact_penalty,
-                  data.stick_penalty > 0 ? data.stick_penalty : shear});
     for (const Element &e : elements)
-      for (unsigned int q = 0; q < e.JxW.size(); ++q)
-        for (unsigned int a = 0; a < e.dofs.size(); ++a)
+      {
+        const double k = e.interface == data.interfaces.size() ?
+                           crack_penalty :
+                           largest_ply_penalty();
+        for (unsigned int q = 0; q < e.JxW.size(); ++q)
+          for (unsigned int a = 0; a < e.dofs.size(); ++a)
+            {
+              if (e.shape(q, a) == 0)
+                continue;
+              double row = 0;
+              for (unsigned int b = 0; b < e.dofs.size(); ++b)
+                if (e.component[b] == e.component[a])
+                  row += std::abs(e.shape(q, b));
+              row_sums(e.dofs[a])
+                += k * e.JxW[q] * std::abs(e.shape(q, a)) * row;
+            }
+      }
+  }
+
+
+
+  template <int dim>
+  double
+  CohesiveInterfaces<dim>::largest_ply_penalty() const
+  {
+    const double shear = data.shear_stiffness;
+    return std::max({data.normal_stiffness,
+                     shear,
+                     data.contact_penalty,
+                     data.stick_penalty > 0 ? data.stick_penalty : shear});
+  }
+
+
+
+  template <int dim>
+  double
+  CohesiveInterfaces<dim>::crack_frequency_squared(
+    const TiedCopyDoFs<dim> &dofs,
+    const std::function<void(const CellIterator &, dealii::Vector<double> &)>
+                                                                  &element_mass,
+    const std::function<bool(const CellIterator &, unsigned int)> &may_crack,
+    Point<dim>                                                    &where) const
+  {
+    const auto               &fe      = dofs.get_fe();
+    const unsigned int        n       = fe.n_dofs_per_cell();
+    const unsigned int        n_nodes = fe.degree + 1;
+    const Quadrature<dim - 1> quadrature
+      = data.lobatto ? Quadrature<dim - 1>(QGaussLobatto<dim - 1>(n_nodes)) :
+                       Quadrature<dim - 1>(QGauss<dim - 1>(n_nodes));
+    FEFaceValues<dim>      face_values(dofs.get_mapping(),
+                                  fe,
+                                  quadrature,
+                                  update_values | update_JxW_values);
+    dealii::Vector<double> mass(n), rows(n);
+    double                 largest = 0;
+    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
+      {
+        if (!cell->is_locally_owned())
+          continue;
+        rows = 0;
+        for (const unsigned int f : cell->face_indices())
           {
-            if (e.shape(q, a) == 0)
+            double k = 0;
+            if (is_crack(cell, f) || may_crack(cell, f))
+              k = crack_penalty;
+            else if (is_cohesive(cell, f))
+              k = largest_ply_penalty();
+            if (k == 0)
               continue;
-            double row = 0;
-            for (unsigned int b = 0; b < e.dofs.size(); ++b)
-              if (e.component[b] == e.component[a])
-                row += std::abs(e.shape(q, b));
-            row_sums(e.dofs[a]) += k * e.JxW[q] * std::abs(e.shape(q, a)) * row;
+            face_values.reinit(cell, f);
+            // The other side's shape values at a point mirror this
+            // side's: the row sum over both sides is twice this side's.
+            for (const unsigned int q : face_values.quadrature_point_indices())
+              for (unsigned int a = 0; a < n; ++a)
+                {
+                  const double Na = std::abs(face_values.shape_value(a, q));
+                  if (Na == 0)
+                    continue;
+                  double row = 0;
+                  for (unsigned int b = 0; b < n; ++b)
+                    if (fe.system_to_component_index(b).first
+                        == fe.system_to_component_index(a).first)
+                      row += std::abs(face_values.shape_value(b, q));
+                  rows(a) += 2 * k * face_values.JxW(q) * Na * row;
+                }
           }
+        if (rows.l1_norm() == 0)
+          continue;
+        element_mass(cell, mass);
+        for (unsigned int a = 0; a < n; ++a)
+          if (rows(a) / mass(a) > largest)
+            {
+              largest = rows(a) / mass(a);
+              where   = dofs.get_mapping().transform_unit_to_real_cell(
+                cell, fe.unit_support_point(a));
+            }
+      }
+    return largest;
   }
 
 

@@ -22,7 +22,12 @@ namespace amfrac
         "zero after the ply's Materials/Gc is dissipated. Among the failing "
         "faces of a cell the one whose normal is closest to the largest "
         "principal stress direction is inserted; the step is then solved "
-        "again.");
+        "again. In explicit runs the check follows every time step, and "
+        "every cell's chosen face is inserted in that step (Faces per "
+        "round, Rounds per step and Onset tolerance are for the static "
+        "path); the time step is chosen once so that it holds for any "
+        "crack pattern of the candidate faces. Every insertion event is a "
+        "row of cracks.csv.");
       prm.declare_entry("Candidate faces",
                         "all",
                         Patterns::Selection("all|through thickness|matrix"),

@@ -1547,11 +1547,11 @@ namespace amfrac
         if (condition)
           throw InputError(name,
                            "crack insertion runs on the static Newton path "
-                           "with displacement or load control so far; it "
-                           "cannot be combined with "
+                           "with displacement or load control and on the "
+                           "explicit path so far; it cannot be combined "
+                           "with "
                              + what);
       };
-      refuse(time.explicit_dynamics, "Time/Time integration = explicit");
       refuse(total_lagrangian, "Kinematics = total Lagrangian");
       refuse(geometry.in_plane,
              "Geometry/2D model = in-plane (a homogenized laminate has no "
@@ -1565,6 +1565,11 @@ namespace amfrac
                                                            "dissipation or "
                                                            "opening"));
       refuse(buckling.active(), "Buckling/Number of modes > 0");
+      if (time.explicit_dynamics && time.mass_scaling_step > 0)
+        throw InputError("Time/Mass scaling time step",
+                         "mass scaling is not available with crack "
+                         "insertion (the mass a node gets would change when "
+                         "it splits); set it to 0");
       refuse(!geometry.refinement_region.empty(),
              "Geometry/Refinement region (a crack cannot open at a hanging "
              "node yet)");

@@ -224,6 +224,8 @@ namespace amfrac
     save_table(run, "history", *summary);
     if (cycle_summary)
       save_table(run, "adaptivity", *cycle_summary);
+    if (crack_events)
+      save_table(run, "crack_events", *crack_events);
     if (field_output)
       {
         save_series(run, "fields", field_output->series());
@@ -400,6 +402,13 @@ namespace amfrac
             parameters.output.directory + "/adaptivity.csv",
             Utilities::MPI::this_mpi_process(comm) == 0);
           restore_table(run, "adaptivity", *cycle_summary);
+        }
+      if (run.has("crack_events.columns"))
+        {
+          crack_events = std::make_unique<History>(
+            parameters.output.directory + "/cracks.csv",
+            Utilities::MPI::this_mpi_process(comm) == 0);
+          restore_table(run, "crack_events", *crack_events);
         }
     });
     pcout << "  resumed from " << restart->folder << " (step "

@@ -209,7 +209,7 @@ namespace amfrac
 
   template <int dim>
   std::vector<typename Simulator<dim>::FailingFace>
-  Simulator<dim>::faces_to_crack() const
+  Simulator<dim>::faces_to_crack(const unsigned int max_faces) const
   {
     constexpr unsigned int  n_faces = GeometryInfo<dim>::faces_per_cell;
     std::vector<Point<dim>> centres(n_faces);
@@ -256,8 +256,8 @@ namespace amfrac
     std::set<FaceKey> failing_set;
     for (const auto &part : Utilities::MPI::all_gather(comm, local_failing))
       for (std::size_t i = 0; i + 4 < part.size(); i += 5)
-        failing_set.insert(
-          {{part[i], part[i + 1], part[i + 2], part[i + 3], part[i + 4]}});
+        failing_set.insert(FaceKey{
+          {part[i], part[i + 1], part[i + 2], part[i + 3], part[i + 4]}});
     if (failing_set.empty())
       return {};
     const std::vector<FaceKey> failing(failing_set.begin(), failing_set.end());
@@ -309,9 +309,8 @@ namespace amfrac
       {
         if (n_sides[i] != 2)
           continue;
-        const auto         cell   = cell_of(failing[i]);
-        const unsigned int f      = failing[i][4];
-        const Point<dim>   centre = cell->face(f)->center();
+        const auto         cell = cell_of(failing[i]);
+        const unsigned int f    = failing[i][4];
         const double       scale
           = crack_strength_scale[cell->active_cell_index() * n_faces + f];
         const Strengths strengths
@@ -375,9 +374,46 @@ namespace amfrac
                      [](const FailingFace &a, const FailingFace &b) {
                        return a.hoffman > b.hoffman;
                      });
-    if (result.size() > parameters.cracks.faces_per_round)
-      result.resize(parameters.cracks.faces_per_round);
+    if (result.size() > max_faces)
+      result.resize(max_faces);
     return result;
+  }
+
+
+
+  template <int dim>
+  typename CohesiveInterfaces<dim>::CrackReport
+  Simulator<dim>::rebuild_crack_elements(const Vector &converged,
+                                         const Vector &onset)
+  {
+    const auto &mapping   = dof_layer.get_mapping();
+    const auto  stress_at = [&](const auto       &cell,
+                               const Point<dim> &point,
+                               const Vector     &state) {
+      FEValues<dim> values(mapping,
+                           dof_layer.get_fe(),
+                           Quadrature<dim>(std::vector<Point<dim>>{
+                             mapping.transform_real_to_unit_cell(cell, point)}),
+                           update_gradients);
+      return cell_stresses(cell, values, state)[0].model;
+    };
+    const auto traction
+      = [&](const typename DoFHandler<dim>::active_cell_iterator &lower,
+            const typename DoFHandler<dim>::active_cell_iterator &upper,
+            const Point<dim>                                     &point,
+            const Tensor<1, dim>                                 &normal,
+            const bool                                            at_onset) {
+          const Vector &state = at_onset ? onset : converged;
+          return model_block<dim>(0.5
+                                  * (stress_at(lower, point, state)
+                                     + stress_at(upper, point, state)))
+                 * normal;
+        };
+    const auto toughness
+      = [&](const typename DoFHandler<dim>::active_cell_iterator &cell) {
+          return plies[cell->material_id()].fracture_energy;
+        };
+    return interfaces->rebuild(dof_layer, traction, toughness);
   }
 
 
@@ -391,7 +427,7 @@ namespace amfrac
     std::vector<FailingFace> chosen;
     {
       TimerOutput::Scope scope(timer, "crack check");
-      chosen = faces_to_crack();
+      chosen = faces_to_crack(parameters.cracks.faces_per_round);
     }
     InsertionReport result;
     if (chosen.empty())
@@ -431,36 +467,8 @@ namespace amfrac
       v = owned;
       return v;
     };
-    const Vector relevant_trial     = ghosted(trial);
-    const Vector relevant_converged = ghosted(converged);
-    const auto  &mapping            = dof_layer.get_mapping();
-    const auto   stress_at          = [&](const auto       &cell,
-                               const Point<dim> &point,
-                               const Vector     &state) {
-      FEValues<dim> values(mapping,
-                           dof_layer.get_fe(),
-                           Quadrature<dim>(std::vector<Point<dim>>{
-                             mapping.transform_real_to_unit_cell(cell, point)}),
-                           update_gradients);
-      return cell_stresses(cell, values, state)[0].model;
-    };
-    const auto traction
-      = [&](const typename DoFHandler<dim>::active_cell_iterator &lower,
-            const typename DoFHandler<dim>::active_cell_iterator &upper,
-            const Point<dim>                                     &point,
-            const Tensor<1, dim>                                 &normal,
-            const bool                                            at_onset) {
-          const Vector &state = at_onset ? relevant_trial : relevant_converged;
-          return model_block<dim>(0.5
-                                  * (stress_at(lower, point, state)
-                                     + stress_at(upper, point, state)))
-                 * normal;
-        };
-    const auto toughness
-      = [&](const typename DoFHandler<dim>::active_cell_iterator &cell) {
-          return plies[cell->material_id()].fracture_energy;
-        };
-    const auto report = interfaces->rebuild(dof_layer, traction, toughness);
+    const auto report
+      = rebuild_crack_elements(ghosted(converged), ghosted(trial));
     // The matrix pattern takes the couplings of the new crack elements.
     const double external_work = newton->external_work;
     setup_newton();
@@ -483,6 +491,11 @@ namespace amfrac
          << interfaces->n_crack_faces() << " crack faces in all, "
          << dof_layer.n_dofs() << " unknowns";
     pcout << line.str() << std::endl;
+    log_crack_event({{"time", t},
+                     {"faces", chosen.size()},
+                     {"crack_faces", interfaces->n_crack_faces()},
+                     {"unknowns", dof_layer.n_dofs()},
+                     {"hoffman", chosen.front().hoffman}});
     result.inserted = chosen.size();
     return result;
   }

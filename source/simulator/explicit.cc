@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <deal.II/base/mpi.h>
+#include <limits>
 #include <sstream>
 
 namespace amfrac
@@ -111,6 +112,15 @@ namespace amfrac
             spring_where = dof_layer.support_point(i);
         springs = max_and_where(springs, spring_where, comm);
       }
+    // With crack insertion the step is chosen once for the whole run: it
+    // must hold for every crack pattern the candidate faces allow.
+    if (interfaces && interfaces->cracks_enabled())
+      {
+        Point<dim>   where;
+        const double cracks = crack_frequency_squared(where);
+        if (cracks > springs)
+          springs = cracks, spring_where = where;
+      }
     double stable = 2. / std::sqrt(bulk + springs);
     if (!(stable > 0 && std::isfinite(stable)))
       throw CollectiveError("the stable time step estimate is "
@@ -120,8 +130,10 @@ namespace amfrac
     pcout << "  stable time step " << stable << " s: elements alone "
           << 2. / std::sqrt(bulk) << " s (at " << bulk_where << ")";
     if (interfaces)
-      pcout << ", interface penalties alone " << 2. / std::sqrt(springs)
-            << " s (at " << spring_where << "); controlled by the "
+      pcout << ", interface penalties"
+            << (interfaces->cracks_enabled() ? " (and any crack pattern)" : "")
+            << " alone " << 2. / std::sqrt(springs) << " s (at " << spring_where
+            << "); controlled by the "
             << (springs > bulk ? "interfaces" : "elements");
     pcout << std::endl;
     // Stiffness-proportional damping: central differences are stable up
@@ -271,13 +283,39 @@ namespace amfrac
   Simulator<dim>::run_explicit()
   {
     check_explicit_input();
+    // References to the layer's sets: they follow a crack insertion.
     const IndexSet &owned    = dof_layer.locally_owned_dofs();
     const IndexSet &relevant = dof_layer.locally_relevant_dofs();
-    Vector mass(owned, comm), velocity(owned, comm), acceleration(owned, comm),
-      force(owned, comm), load(owned, comm), previous_load(owned, comm),
-      reaction(owned, comm), previous_reaction(owned, comm);
-    solution.reinit(owned, comm);
-    relevant_solution.reinit(owned, relevant, comm);
+    Vector mass, velocity, acceleration, force, load, previous_load, reaction,
+      previous_reaction, free_inverse_mass, support_mask, free_mass,
+      damping_force, previous_damping, stiffness_velocity, displacement_step,
+      momentum, old_solution, last_good;
+    // The work vectors on the current numbering (velocity and last_good
+    // are state: a crack insertion carries them).
+    const auto layout = [&](const bool with_state) {
+      for (Vector *v : {&mass,
+                        &acceleration,
+                        &force,
+                        &load,
+                        &previous_load,
+                        &reaction,
+                        &previous_reaction,
+                        &free_inverse_mass,
+                        &support_mask,
+                        &free_mass,
+                        &damping_force,
+                        &previous_damping,
+                        &stiffness_velocity,
+                        &displacement_step,
+                        &momentum,
+                        &old_solution})
+        v->reinit(owned, comm);
+      if (with_state)
+        for (Vector *v : {&solution, &velocity, &last_good})
+          v->reinit(owned, comm);
+      relevant_solution.reinit(owned, relevant, comm);
+    };
+    layout(true);
     {
       TimerOutput::Scope scope(timer, "lumped mass");
       assembler.lumped_mass(mass);
@@ -308,42 +346,45 @@ namespace amfrac
     // prescribed and react with f_int - f_ext (the inertia of their own
     // nodes is the support's: it stays out of the ledger, as does their
     // kinetic energy).
-    Vector free_inverse_mass(mass), support_mask(owned, comm);
-    for (const auto i : owned)
-      free_inverse_mass(i) = 1. / mass(i);
-    for (const auto &support : supports)
-      for (const auto i : support)
-        if (owned.is_element(i))
-          free_inverse_mass(i) = 0, support_mask(i) = 1;
-    free_inverse_mass.compress(VectorOperation::insert);
-    support_mask.compress(VectorOperation::insert);
-    Vector free_mass(mass);
-    for (const auto i : owned)
-      if (free_inverse_mass(i) == 0)
-        free_mass(i) = 0;
-    free_mass.compress(VectorOperation::insert);
+    const auto split_mass = [&]() {
+      for (const auto i : owned)
+        free_inverse_mass(i) = 1. / mass(i);
+      support_mask = 0;
+      for (const auto &support : supports)
+        for (const auto i : support)
+          if (owned.is_element(i))
+            free_inverse_mass(i) = 0, support_mask(i) = 1;
+      free_inverse_mass.compress(VectorOperation::insert);
+      support_mask.compress(VectorOperation::insert);
+      free_mass = mass;
+      for (const auto i : owned)
+        if (free_inverse_mass(i) == 0)
+          free_mass(i) = 0;
+      free_mass.compress(VectorOperation::insert);
+    };
+    split_mass();
 
-    std::unique_ptr<BulkForceOperator<dim>> bulk;
-    {
+    std::unique_ptr<BulkForceOperator<dim>>  bulk;
+    typename ElasticAssembler<dim>::CellList loaded_cells;
+    const auto                               build_operators = [&]() {
       TimerOutput::Scope scope(timer, "element matrices");
       bulk = std::make_unique<BulkForceOperator<dim>>(dof_layer,
                                                       assembler,
                                                       interfaces.get());
-    }
+      loaded_cells = assembler.loaded_cells(loads);
+    };
+    build_operators();
     pcout << "  bulk force: " << bulk->summary() << std::endl;
-    const auto loaded_cells = assembler.loaded_cells(loads);
 
     double strain_energy = 0;
     // Rayleigh damping C v = alpha M v + beta K v, from the velocity at
     // hand when the forces are evaluated (the half-step velocity), so that
     // the scheme stays explicit.
-    const double alpha  = parameters.time.rayleigh_alpha;
-    const double beta   = parameters.time.rayleigh_beta;
-    const bool   damped = alpha > 0 || beta > 0;
-    Vector       damping_force(owned, comm), previous_damping(owned, comm),
-      stiffness_velocity(owned, comm);
-    double damping_work   = 0;
-    auto   update_damping = [&]() {
+    const double alpha          = parameters.time.rayleigh_alpha;
+    const double beta           = parameters.time.rayleigh_beta;
+    const bool   damped         = alpha > 0 || beta > 0;
+    double       damping_work   = 0;
+    auto         update_damping = [&]() {
       if (!damped)
         return;
       damping_force = velocity;
@@ -385,11 +426,18 @@ namespace amfrac
     // The energy the run starts with (initial velocity, prescribed
     // displacement at t = 0) enters the balance beside the external work.
     double external_work = 0, initial_energy = 0;
-    Vector displacement_step(owned, comm), momentum(owned, comm);
     auto   kinetic_energy = [&]() {
       momentum = velocity;
       momentum.scale(free_mass);
       return 0.5 * (momentum * velocity);
+    };
+    // The work of the interface and crack tractions (collective).
+    auto interface_work = [&]() {
+      double work = 0;
+      if (interfaces)
+        for (const auto &l : interfaces->ledger(comm))
+          work += l.work;
+      return work;
     };
     auto ledger_row = [&]() {
       relevant_solution                                   = solution;
@@ -412,8 +460,8 @@ namespace amfrac
     double        t = 0;
     ExplicitState state;
     state.dt = dt;
-    // The state of the last output step: written if the run diverges.
-    Vector last_good(owned, comm);
+    // last_good: the state of the last output step, written if the run
+    // diverges.
     state.vectors = {{"last_good", &last_good},
                      {"displacement", &solution},
                      {"velocity", &velocity},
@@ -472,7 +520,6 @@ namespace amfrac
             << out * substeps << " steps, " << rate << " steps/s, about "
             << (n_out - out) * substeps / rate << " s to go" << std::endl;
     };
-    Vector old_solution(owned, comm);
     // Write the fields of the last output step and stop with @p what.
     const auto stop_with_last_good = [&](const std::string &what) {
       relevant_solution = last_good;
@@ -537,6 +584,47 @@ namespace amfrac
               stop_with_last_good(what.str());
             }
         }
+        if (parameters.cracks.active)
+          {
+            // Every face that fails in the step cracks in it; the state
+            // moves to the new numbering, and the forces and the
+            // acceleration are those of the cracked body.
+            relevant_solution = solution;
+            std::vector<FailingFace> chosen;
+            {
+              TimerOutput::Scope scope(timer, "crack check");
+              chosen = faces_to_crack(std::numeric_limits<unsigned int>::max());
+            }
+            if (!chosen.empty())
+              {
+                TimerOutput::Scope scope(timer, "crack insertion");
+                const double       before
+                  = kinetic_energy() + strain_energy + interface_work();
+                insert_explicit_cracks(chosen,
+                                       {&solution, &velocity, &last_good});
+                layout(false);
+                assembler.lumped_mass(mass);
+                split_mass();
+                build_operators();
+                update_damping();
+                evaluate(t);
+                const double after
+                  = kinetic_energy() + strain_energy + interface_work();
+                log_crack_event(
+                  {{"time", t},
+                   {"step", static_cast<double>(n)},
+                   {"faces", chosen.size()},
+                   {"crack_faces", interfaces->n_crack_faces()},
+                   {"unknowns", dof_layer.n_dofs()},
+                   {"hoffman", chosen.front().hoffman},
+                   {"energy_before", before},
+                   {"energy_after", after},
+                   {"energy_jump",
+                    (after - before)
+                      / std::max(std::abs(initial_energy + external_work),
+                                 1e-300)}});
+              }
+          }
         // A signal stops the run after a time step; the rest of the
         // checkpoints fall on output steps.
         const bool at_row = n % substeps == 0;

@@ -431,12 +431,13 @@ subsection Time
 end"
 
 # Crack insertion: combinations not available yet, bad plies, bad data.
-expect crack_explicit "Crack insertion/Criterion" "$base
+expect crack_mass_scaling "Time/Mass scaling time step" "$base
 subsection Crack insertion
   set Criterion = hoffman
 end
 subsection Time
-  set Time integration = explicit
+  set Time integration       = explicit
+  set Mass scaling time step = 1e-7
 end"
 expect crack_plies "Crack insertion/Plies" "$base
 subsection Crack insertion

@@ -112,6 +112,11 @@ namespace amfrac
     void
     lumped_mass(Vector &mass) const;
 
+    /** The same for the dofs of one element (in its local order). */
+    void
+    element_lumped_mass(const typename TiedCopyDoFs<dim>::CellIterator &cell,
+                        dealii::Vector<double> &mass) const;
+
     /** omega_max^2 of one element alone, free, with its lumped mass: by
      * Irons' theorem the largest over the elements bounds the mesh's. */
     double

@@ -216,6 +216,23 @@ namespace amfrac
     void
     set_local_indices(const Utilities::MPI::Partitioner &partitioner);
 
+    /** Explicit dynamics with crack insertion: a bound of omega^2 of the
+     * penalty springs (Gershgorin's, as add_penalty_row_sums()) that holds
+     * for any crack pattern among the faces @p may_crack selects: on each
+     * locally owned cell, every such face a crack, every cohesive face as
+     * it is, and every node of the cell a copy of its own, with the
+     * cell's share of the lumped mass (@p element_mass). A copy shared by
+     * several cells has its springs over its mass at most the largest
+     * ratio of its cells, so that the bound covers any splitting. Returns
+     * the bound on this rank, the dof's support point in @p where. */
+    double
+    crack_frequency_squared(
+      const TiedCopyDoFs<dim> &dofs,
+      const std::function<void(const CellIterator &, dealii::Vector<double> &)>
+        &element_mass,
+      const std::function<bool(const CellIterator &, unsigned int)> &may_crack,
+      Point<dim> &where) const;
+
     /** Explicit dynamics: @p f += the interface forces of the jumps of
      * @p u (local arrays, see set_local_indices()); updates the trial
      * states, and commits them. The same laws and sums as assemble()
@@ -441,6 +458,11 @@ namespace amfrac
 
     void
     count_contact_change(Element &element, const unsigned int q);
+
+    /** The stiffest penalty of the ply interfaces' law (normal, shear,
+     * contact, stick). */
+    double
+    largest_ply_penalty() const;
 
     bool
     is_cohesive(const typename Triangulation<dim>::cell_iterator &cell,

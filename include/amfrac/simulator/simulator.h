@@ -143,6 +143,14 @@ namespace amfrac
       return cycle_summary.get();
     }
 
+    /** Crack insertion: cracks.csv (one row per insertion event);
+     * nullptr before the first. */
+    const History *
+    crack_history() const
+    {
+      return crack_events.get();
+    }
+
     /** Buckling analyses: buckling.csv (one row per mode); nullptr
      * before the analysis. */
     const History *
@@ -271,7 +279,9 @@ namespace amfrac
     typename ErrorEstimator<dim>::Estimate      last_zz;
     std::vector<std::pair<std::string, double>> last_row;
     std::unique_ptr<History>                    cycle_summary;
-    std::unique_ptr<History>                    buckling_summary;
+    /** cracks.csv: one row per crack insertion event. */
+    std::unique_ptr<History> crack_events;
+    std::unique_ptr<History> buckling_summary;
     /** The lowest positive load factor of the last buckling analysis (0:
      * none). */
     double lowest_load_factor = 0;
@@ -499,7 +509,26 @@ namespace amfrac
     /** The faces to insert next, the most critical first, at most Faces
      * per round; the same on every rank (collective). */
     std::vector<FailingFace>
-    faces_to_crack() const;
+    faces_to_crack(const unsigned int max_faces) const;
+    /** The interface elements after the DoF layer released new faces:
+     * new cracks start from the mean traction of the two cells in
+     * @p converged and take their onset from @p onset (both ghosted, on
+     * the new numbering). */
+    typename CohesiveInterfaces<dim>::CrackReport
+    rebuild_crack_elements(const Vector &converged, const Vector &onset);
+    /** Explicit runs: release @p chosen, rebuild the DoF layer and the
+     * interface elements, and move the @p carried vectors (the
+     * displacement first, owned entries) to the new numbering. */
+    void
+    insert_explicit_cracks(const std::vector<FailingFace> &chosen,
+                           const std::vector<Vector *>    &carried);
+    /** omega^2 bound of the interface and crack penalty springs for any
+     * crack pattern of the candidate faces, and where (collective). */
+    double
+    crack_frequency_squared(Point<dim> &where) const;
+    /** One row of cracks.csv: an insertion event. */
+    void
+    log_crack_event(const std::vector<std::pair<std::string, double>> &row);
     /** What insert_cracks() did. */
     struct InsertionReport
     {

@@ -1,0 +1,76 @@
+// Crack insertion in explicit runs (Time integration = explicit with
+// Crack insertion = hoffman): the time step bound that holds for any crack
+// pattern, and the insertion of every face that fails in a step with the
+// state carried to the new numbering.
+#include <amfrac/base/mpi_max.h>
+#include <amfrac/simulator/simulator.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/fe/fe_values.h>
+#include <sstream>
+
+namespace amfrac
+{
+  template <int dim>
+  double
+  Simulator<dim>::crack_frequency_squared(Point<dim> &where) const
+  {
+    const auto element_mass
+      = [this](const auto &cell, dealii::Vector<double> &mass) {
+          assembler.element_lumped_mass(cell, mass);
+        };
+    const auto may_crack = [this](const auto &cell, const unsigned int f) {
+      return crack_candidate(cell, f);
+    };
+    const double local = interfaces->crack_frequency_squared(dof_layer,
+                                                             element_mass,
+                                                             may_crack,
+                                                             where);
+    return max_and_where(local, where, comm);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::insert_explicit_cracks(const std::vector<FailingFace> &chosen,
+                                         const std::vector<Vector *> &carried)
+  {
+    for (const FailingFace &face : chosen)
+      interfaces->add_crack(face.cell, face.face);
+    // The copies keep their values: only the ties change.
+    std::vector<dealii::Vector<double>> copies(carried.size());
+    for (unsigned int i = 0; i < carried.size(); ++i)
+      dof_layer.expand_all(dof_layer.replicate(*carried[i]), copies[i]);
+    rebuild_after_mesh_change();
+    for (unsigned int i = 0; i < carried.size(); ++i)
+      {
+        carried[i]->reinit(dof_layer.locally_owned_dofs(), comm);
+        dof_layer.gather(copies[i], *carried[i]);
+      }
+    // The first carried vector is the displacement: a new crack starts
+    // from its traction, which is also its onset.
+    relevant_solution.reinit(dof_layer.locally_owned_dofs(),
+                             dof_layer.locally_relevant_dofs(),
+                             comm);
+    relevant_solution = *carried[0];
+    rebuild_crack_elements(relevant_solution, relevant_solution);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::log_crack_event(
+    const std::vector<std::pair<std::string, double>> &row)
+  {
+    if (!crack_events)
+      crack_events
+        = std::make_unique<History>(parameters.output.directory + "/cracks.csv",
+                                    Utilities::MPI::this_mpi_process(comm)
+                                      == 0);
+    crack_events->add_row(row);
+  }
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace amfrac
