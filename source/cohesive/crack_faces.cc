@@ -5,6 +5,7 @@
 #include <amfrac/cohesive/interface_assembler.h>
 #include <amfrac/parameters/input_error.h>
 #include <deal.II/base/mpi.h>
+#include <functional>
 #include <sstream>
 
 namespace amfrac
@@ -102,6 +103,68 @@ namespace amfrac
                            "mesh of these parameters: the checkpoint is of "
                            "another scene");
         add_crack(cell, face);
+      }
+  }
+
+
+
+  namespace
+  {
+    /** True if @p face is @p parent or one of its descendants. */
+    template <typename FaceIterator>
+    bool
+    face_within(const FaceIterator &face, const FaceIterator &parent)
+    {
+      if (face == parent)
+        return true;
+      if (!parent->has_children())
+        return false;
+      for (unsigned int c = 0; c < parent->n_children(); ++c)
+        if (face_within(face, parent->child(c)))
+          return true;
+      return false;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  CohesiveInterfaces<dim>::follow_mesh_change(const Triangulation<dim> &tria)
+  {
+    if (cracked.empty())
+      return;
+    // A refined cell's crack face goes to the children that lie on it
+    // (any refinement case: a child touching face f has its own face f in
+    // the parent's face f). Cracked cells are never coarsened
+    // (match_flags()), so every key still names a cell.
+    std::set<std::pair<CellId, unsigned int>> updated;
+    const std::function<void(const typename Triangulation<dim>::cell_iterator &,
+                             unsigned int)>
+      add = [&](const auto &cell, const unsigned int f) {
+        if (cell->is_active())
+          {
+            updated.insert({cell->id(), f});
+            return;
+          }
+        for (const auto &child : cell->child_iterators())
+          if (face_within(child->face(f), cell->face(f)))
+            add(child, f);
+      };
+    for (const auto &[id, f] : cracked)
+      add(tria.create_cell_iterator(id), f);
+    cracked = std::move(updated);
+    for (const auto &[id, f] : cracked)
+      {
+        const auto cell = tria.create_cell_iterator(id);
+        AssertThrow(!cell->at_boundary(f) && cell->neighbor(f)->is_active()
+                      && !cell->neighbor_is_coarser(f)
+                      && cracked.count({cell->neighbor(f)->id(),
+                                        cell->neighbor_of_neighbor(f)})
+                           > 0,
+                    ExcMessage("a crack face is no longer a regular face "
+                               "with the crack on both sides after the mesh "
+                               "changed"));
       }
   }
 

@@ -109,7 +109,21 @@ namespace amfrac
         for (const auto &cell : triangulation.active_cell_iterators())
           for (const unsigned int f : cell->face_indices())
             {
-              if (!is_cohesive(cell, f) || !cell->neighbor(f)->is_active())
+              if (cell->at_boundary(f) || !cell->neighbor(f)->is_active())
+                continue;
+              // A crack face is never coarsened away (neither side): the
+              // rule that keeps every crack as it was inserted.
+              if (is_crack(cell, f))
+                {
+                  if (cell->coarsen_flag_set()
+                      || cell->neighbor(f)->coarsen_flag_set())
+                    {
+                      clear_siblings(cell);
+                      clear_siblings(cell->neighbor(f));
+                      changed = true;
+                    }
+                }
+              else if (!is_cohesive(cell, f))
                 continue;
               const auto neighbor = cell->neighbor(f);
               // The same refinement case on both sides (anisotropic cases

@@ -1472,14 +1472,6 @@ namespace amfrac
                          "load history (Refine every, Error threshold, "
                          "Process zone elements), not by cycles of whole "
                          "runs; set Refinement cycles = 0");
-      if (adaptivity.during_history() && cohesive.interfaces.empty())
-        throw InputError(
-          adaptivity.process_zone_elements > 0 ?
-            "Adaptivity/Process zone elements" :
-          adaptivity.refine_every > 0 ? "Adaptivity/Refine every" :
-                                        "Adaptivity/Error threshold",
-          "refinement during a load history is for scenes with cohesive "
-          "interfaces; a linear scene adapts by Refinement cycles");
       buckling.parse_parameters(prm);
       check_buckling_input();
       check_kinematics_input();
@@ -1493,6 +1485,25 @@ namespace amfrac
       check_arc_length_input();
       checkpoint.parse_parameters(prm, output.directory);
       cracks.parse_parameters(prm, geometry.plies.size());
+      if (adaptivity.during_history() && cohesive.interfaces.empty()
+          && (!cracks.active || adaptivity.process_zone_elements > 0))
+        throw InputError(
+          adaptivity.process_zone_elements > 0 ?
+            "Adaptivity/Process zone elements" :
+          adaptivity.refine_every > 0 ? "Adaptivity/Refine every" :
+                                        "Adaptivity/Error threshold",
+          "refinement during a load history is for scenes with cohesive "
+          "interfaces or crack insertion (the process-zone rule for "
+          "scenes with cohesive interfaces); a linear scene adapts by "
+          "Refinement cycles");
+      if (dimension == 3 && adaptivity.during_history()
+          && !geometry.refinement_region.empty())
+        throw InputError("Geometry/Refinement region",
+                         "refines through the thickness as well, and "
+                         "refinement during the load history (Refine every, "
+                         "Error threshold, Process zone elements) in 3D "
+                         "refines along the plies only: the two cannot be "
+                         "combined; let the adaptivity refine the region");
       check_crack_input();
       if (adaptivity.active() && checkpoint.by_count_or_stop())
         throw InputError(checkpoint.every_n_steps > 0 ?
@@ -1556,8 +1567,10 @@ namespace amfrac
       refuse(geometry.in_plane,
              "Geometry/2D model = in-plane (a homogenized laminate has no "
              "plies to crack)");
-      refuse(adaptivity.active() || adaptivity.during_history(),
-             "refinement (the Adaptivity subsection)");
+      refuse(adaptivity.active(),
+             "Adaptivity/Refinement cycles (cycles of a linear scene; "
+             "refinement during the load history, Refine every, Error "
+             "threshold, works with cracks)");
       refuse(nonlinear_solver.arc_length
                || nonlinear_solver.dissipation_control,
              "Nonlinear solver/Control = "
@@ -1570,9 +1583,6 @@ namespace amfrac
                          "mass scaling is not available with crack "
                          "insertion (the mass a node gets would change when "
                          "it splits); set it to 0");
-      refuse(!geometry.refinement_region.empty(),
-             "Geometry/Refinement region (a crack cannot open at a hanging "
-             "node yet)");
     }
 
 

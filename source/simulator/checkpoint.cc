@@ -297,6 +297,12 @@ namespace amfrac
     append_bits(refine, mesh_changes);
     append_bits(coarsen, mesh_changes);
     triangulation.execute_coarsening_and_refinement();
+    if (interfaces && interfaces->cracks_enabled())
+      {
+        interfaces->follow_mesh_change(triangulation);
+        // Per face of the new mesh (a random field is drawn again).
+        evaluate_strength_scale();
+      }
   }
 
 

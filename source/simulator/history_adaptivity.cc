@@ -250,6 +250,8 @@ namespace amfrac
       relevant_solution = newton->converged_solution;
       report   = interfaces->transfer(snapshot, relevant_solution, comm);
       solution = newton->converged_solution;
+      // copy_solution() follows the mesh.
+      dof_layer.expand(relevant_solution, copy_values);
       // The reactions of the transferred state start the trapezoidal rule
       // of the external work of the next step.
       assembler.assemble_load(loads, t, newton->external_load);

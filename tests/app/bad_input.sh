@@ -366,6 +366,16 @@ end
 subsection Adaptivity
   set Refinement cycles = 2
 end"
+expect adaptivity_history_region "Geometry/Refinement region" "$base
+subsection Geometry
+  set Refinement region = x < 1
+end
+subsection Crack insertion
+  set Criterion = hoffman
+end
+subsection Adaptivity
+  set Refine every = 2
+end"
 expect adaptivity_history_linear "Adaptivity/Process zone elements" "$base
 subsection Adaptivity
   set Process zone elements = 2

@@ -81,6 +81,13 @@ namespace amfrac
     add_cracks(const Triangulation<dim>        &triangulation,
                const std::vector<std::int64_t> &keys);
 
+    /** After a mesh change: the crack faces of refined cells move to the
+     * children on them (children of a cracked face are cracked). Cells
+     * with a crack face are never coarsened (match_flags()); throws if a
+     * crack face is no longer regular on both sides. */
+    void
+    follow_mesh_change(const Triangulation<dim> &triangulation);
+
     /** Number of inserted crack faces (each once, all ranks: the set is
      * replicated). */
     std::size_t
