@@ -60,9 +60,16 @@ namespace amfrac
 
   template <int dim>
   void
-  TiedCopyDoFs<dim>::distribute(const FaceFilter &released)
+  TiedCopyDoFs<dim>::distribute(const FaceFilter &released,
+                                const bool        same_mesh)
   {
-    dof_handler.distribute_dofs(*fe);
+    // The copies of an unchanged mesh are numbered as before.
+    if (!same_mesh || copy_position.size() != dof_handler.n_dofs()
+        || copy_position.empty())
+      {
+        dof_handler.distribute_dofs(*fe);
+        copy_position.clear();
+      }
     const unsigned int n_local = fe->n_dofs_per_cell();
     if (!mapping)
       {
@@ -77,19 +84,22 @@ namespace amfrac
 
     // Real positions of all copies: copies are tied by position, so no
     // face-orientation logic is needed.
-    std::vector<Point<dim>>              copy_position(dof_handler.n_dofs());
-    const MappingQ1<dim>                 mapping;
-    FEValues<dim>                        fe_values(mapping,
-                            *fe,
-                            Quadrature<dim>(fe->get_unit_support_points()),
-                            update_quadrature_points);
-    std::vector<types::global_dof_index> local(n_local);
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    if (copy_position.empty())
       {
-        fe_values.reinit(cell);
-        cell->get_dof_indices(local);
-        for (unsigned int i = 0; i < n_local; ++i)
-          copy_position[local[i]] = fe_values.quadrature_point(i);
+        copy_position.resize(dof_handler.n_dofs());
+        const MappingQ1<dim>                 mapping;
+        FEValues<dim>                        fe_values(mapping,
+                                *fe,
+                                Quadrature<dim>(fe->get_unit_support_points()),
+                                update_quadrature_points);
+        std::vector<types::global_dof_index> local(n_local);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          {
+            fe_values.reinit(cell);
+            cell->get_dof_indices(local);
+            for (unsigned int i = 0; i < n_local; ++i)
+              copy_position[local[i]] = fe_values.quadrature_point(i);
+          }
       }
 
     std::vector<types::global_dof_index> parent(dof_handler.n_dofs());
@@ -323,6 +333,7 @@ namespace amfrac
            + hanging_constraints.memory_consumption()
            + copy_to_reduced.capacity() * sizeof(types::global_dof_index)
            + support_points.capacity() * sizeof(Point<dim>)
+           + copy_position.capacity() * sizeof(Point<dim>)
            + components.capacity() + owned_dofs.memory_consumption()
            + relevant_dofs.memory_consumption();
   }

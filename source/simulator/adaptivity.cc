@@ -208,10 +208,11 @@ namespace amfrac
 
   template <int dim>
   void
-  Simulator<dim>::rebuild_after_mesh_change()
+  Simulator<dim>::rebuild_after_mesh_change(const bool same_mesh)
   {
     dof_layer.distribute(interfaces ? interfaces->released_faces() :
-                                      typename TiedCopyDoFs<dim>::FaceFilter());
+                                      typename TiedCopyDoFs<dim>::FaceFilter(),
+                         same_mesh);
     lever.collect(dof_layer);
     dof_layer.add_relevant_dofs(lever.all_dofs());
     for (auto &patch : loads.patches)

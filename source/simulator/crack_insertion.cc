@@ -10,6 +10,7 @@
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/matrix_free/fe_point_evaluation.h>
 #include <numeric>
 #include <set>
 #include <sstream>
@@ -386,16 +387,26 @@ namespace amfrac
   Simulator<dim>::rebuild_crack_elements(const Vector &converged,
                                          const Vector &onset)
   {
-    const auto &mapping   = dof_layer.get_mapping();
-    const auto  stress_at = [&](const auto       &cell,
+    // One point evaluator for all points (an FEValues per point was half
+    // of the cost of an insertion event).
+    const auto                 &mapping = dof_layer.get_mapping();
+    const auto                 &fe      = dof_layer.get_fe();
+    FEPointEvaluation<dim, dim> evaluator(mapping, fe, update_gradients);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    std::vector<double>                  values(fe.n_dofs_per_cell());
+    const auto                           stress_at = [&](const auto       &cell,
                                const Point<dim> &point,
                                const Vector     &state) {
-      FEValues<dim> values(mapping,
-                           dof_layer.get_fe(),
-                           Quadrature<dim>(std::vector<Point<dim>>{
-                             mapping.transform_real_to_unit_cell(cell, point)}),
-                           update_gradients);
-      return cell_stresses(cell, values, state)[0].model;
+      const Point<dim> unit = mapping.transform_real_to_unit_cell(cell, point);
+      evaluator.reinit(cell, ArrayView<const Point<dim>>(&unit, 1));
+      dof_layer.get_dof_indices(cell, dofs);
+      for (unsigned int i = 0; i < dofs.size(); ++i)
+        values[i] = state(dofs[i]);
+      evaluator.evaluate(make_array_view(values), EvaluationFlags::gradients);
+      const Tensor<2, dim> gradient = evaluator.get_gradient(0);
+      return evaluate_ply_stress(plies[cell->material_id()],
+                                 symmetrize(gradient))
+        .model;
     };
     const auto traction
       = [&](const typename DoFHandler<dim>::active_cell_iterator &lower,
@@ -448,7 +459,7 @@ namespace amfrac
     dof_layer.expand_all(dof_layer.replicate(solution), trial_copies);
     dof_layer.expand_all(dof_layer.replicate(newton->converged_solution),
                          converged_copies);
-    rebuild_after_mesh_change();
+    rebuild_after_mesh_change(true);
     Vector trial(dof_layer.locally_owned_dofs(), comm);
     dof_layer.gather(trial_copies, trial);
     make_constraints(t, constraints, false);

@@ -41,7 +41,7 @@ namespace amfrac
     std::vector<dealii::Vector<double>> copies(carried.size());
     for (unsigned int i = 0; i < carried.size(); ++i)
       dof_layer.expand_all(dof_layer.replicate(*carried[i]), copies[i]);
-    rebuild_after_mesh_change();
+    rebuild_after_mesh_change(true);
     for (unsigned int i = 0; i < carried.size(); ++i)
       {
         carried[i]->reinit(dof_layer.locally_owned_dofs(), comm);

@@ -45,9 +45,13 @@ namespace amfrac
     /** Build the copies and the tie map; faces for which @p released
      * returns true stay untied. On a hanging face, a fine copy that sits on
      * a coarse node is tied to it and the others are constrained to
-     * interpolate the coarse face (hanging_node_constraints()). */
+     * interpolate the coarse face (hanging_node_constraints()). With
+     * @p same_mesh (more faces released on the mesh of the last call,
+     * which has not changed since: crack insertion), the copies and their
+     * positions of the last call are kept. */
     void
-    distribute(const FaceFilter &released = FaceFilter());
+    distribute(const FaceFilter &released  = FaceFilter(),
+               const bool        same_mesh = false);
 
     /** The DoFHandler of the copy space (for FEValues and DataOut). */
     const DoFHandler<dim> &
@@ -188,10 +192,12 @@ namespace amfrac
     std::vector<std::vector<unsigned int>> face_dofs;
     std::vector<types::global_dof_index>   copy_to_reduced;
     std::vector<Point<dim>>                support_points;
-    std::vector<unsigned char>             components;
-    IndexSet                               owned_dofs;
-    AffineConstraints<double>              hanging_constraints;
-    IndexSet                               relevant_dofs;
+    /** Real positions of all copies (from the last distribute()). */
+    std::vector<Point<dim>>    copy_position;
+    std::vector<unsigned char> components;
+    IndexSet                   owned_dofs;
+    AffineConstraints<double>  hanging_constraints;
+    IndexSet                   relevant_dofs;
 
     /** Union-find over copies: tie the copies of two faces that share a
      * support point and a component. */

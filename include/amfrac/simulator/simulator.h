@@ -478,9 +478,10 @@ namespace amfrac
     /** Rebuild everything that depends on the mesh. */
     void
     setup_after_refinement();
-    /** The same without the timer section (inside the constructor's). */
+    /** The same without the timer section (inside the constructor's);
+     * @p same_mesh: only more faces were released (crack insertion). */
     void
-    rebuild_after_mesh_change();
+    rebuild_after_mesh_change(const bool same_mesh = false);
     /** One row of adaptivity.csv and its console line. */
     void
     report_cycle();
