@@ -255,6 +255,9 @@ namespace amfrac
     unsigned long cracked = 0, candidates = 0;
     for (Element &element : elements)
       {
+        // Inserted cracks are no ply interface: no pre-crack there.
+        if (element.interface >= data.interfaces.size())
+          continue;
         candidates += element.points.size();
         if (!std::binary_search(data.precrack_interfaces.begin(),
                                 data.precrack_interfaces.end(),
@@ -799,7 +802,9 @@ namespace amfrac
     const Quadrature<dim - 1> quadrature
       = data.lobatto ? Quadrature<dim - 1>(QGaussLobatto<dim - 1>(n_nodes)) :
                        Quadrature<dim - 1>(QGauss<dim - 1>(n_nodes));
-    FEFaceValues<dim>      face_values(dofs.get_mapping(),
+    // The mapping of the interface elements (make_elements()).
+    const MappingQ1<dim>   mapping;
+    FEFaceValues<dim>      face_values(mapping,
                                   fe,
                                   quadrature,
                                   update_values | update_JxW_values);
@@ -843,8 +848,9 @@ namespace amfrac
           if (rows(a) / mass(a) > largest)
             {
               largest = rows(a) / mass(a);
-              where   = dofs.get_mapping().transform_unit_to_real_cell(
-                cell, fe.unit_support_point(a));
+              where
+                = mapping.transform_unit_to_real_cell(cell,
+                                                      fe.unit_support_point(a));
             }
       }
     return largest;

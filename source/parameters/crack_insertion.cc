@@ -56,7 +56,8 @@ namespace amfrac
         "strength field with rand_seed(s)); must be positive. Evaluated once "
         "per face when the scene is set up, in the same order on every "
         "rank, so a random field is one fixed field on any number of "
-        "ranks.");
+        "ranks; after a mesh change faces keep their value, children of a "
+        "face take their parent's, and only new faces are evaluated.");
       prm.declare_entry("Penalty stiffness",
                         "1e6",
                         Patterns::Double(0),

@@ -296,12 +296,16 @@ namespace amfrac
     triangulation.save_coarsen_flags(coarsen);
     append_bits(refine, mesh_changes);
     append_bits(coarsen, mesh_changes);
+    const bool cracks = interfaces && interfaces->cracks_enabled();
+    FaceValues strength;
+    if (cracks)
+      strength = strength_scale_by_face();
     triangulation.execute_coarsening_and_refinement();
-    if (interfaces && interfaces->cracks_enabled())
+    if (cracks)
       {
         interfaces->follow_mesh_change(triangulation);
-        // Per face of the new mesh (a random field is drawn again).
-        evaluate_strength_scale();
+        // Faces keep their strength, children take their parent's.
+        evaluate_strength_scale(&strength);
       }
   }
 

@@ -11,6 +11,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/matrix_free/fe_point_evaluation.h>
+#include <limits>
 #include <numeric>
 #include <set>
 #include <sstream>
@@ -85,6 +86,31 @@ namespace amfrac
                key_of<dim>(neighbor, cell->neighbor_of_neighbor(f));
     }
 
+    /** An interior face with an active neighbour of the same level
+     * (neither side hanging). */
+    template <typename CellIterator>
+    bool
+    regular_interior_face(const CellIterator &cell, const unsigned int f)
+    {
+      return !cell->at_boundary(f) && cell->neighbor(f)->is_active()
+             && !cell->neighbor_is_coarser(f);
+    }
+
+    /** True if @p face is @p parent or one of its descendants. */
+    template <typename FaceIterator>
+    bool
+    face_within(const FaceIterator &face, const FaceIterator &parent)
+    {
+      if (face == parent)
+        return true;
+      if (!parent->has_children())
+        return false;
+      for (unsigned int c = 0; c < parent->n_children(); ++c)
+        if (face_within(face, parent->child(c)))
+          return true;
+      return false;
+    }
+
     /** The Hoffman index beyond which a face cracks, and the smallest
      * traction a crack starts from (relative to the largest strength). */
     constexpr double hoffman_limit     = 1.;
@@ -94,14 +120,47 @@ namespace amfrac
 
 
   template <int dim>
+  typename Simulator<dim>::FaceValues
+  Simulator<dim>::strength_scale_by_face() const
+  {
+    constexpr unsigned int n_faces = GeometryInfo<dim>::faces_per_cell;
+    FaceValues             values;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (unsigned int f = 0; f < n_faces; ++f)
+        if (regular_interior_face(cell, f))
+          values[{cell->id(), f}]
+            = crack_strength_scale[cell->active_cell_index() * n_faces + f];
+    return values;
+  }
+
+
+
+  template <int dim>
   void
-  Simulator<dim>::evaluate_strength_scale()
+  Simulator<dim>::evaluate_strength_scale(const FaceValues *previous)
   {
     const auto scale
       = make_expression_function<dim>({parameters.cracks.strength_scale},
                                       1,
                                       parameters.boundary_conditions.constants,
                                       "Crack insertion/Strength scale");
+    // The value a face had before the mesh change: its own, or its
+    // parent face's (a refined cell's child on that face).
+    const auto inherited = [&](const auto &cell, const unsigned int f) {
+      if (previous == nullptr)
+        return std::numeric_limits<double>::quiet_NaN();
+      auto found = previous->find({cell->id(), f});
+      if (found != previous->end())
+        return found->second;
+      if (cell->level() > 0
+          && face_within(cell->face(f), cell->parent()->face(f)))
+        {
+          found = previous->find({cell->parent()->id(), f});
+          if (found != previous->end())
+            return found->second;
+        }
+      return std::numeric_limits<double>::quiet_NaN();
+    };
     constexpr unsigned int n_faces = GeometryInfo<dim>::faces_per_cell;
     crack_strength_scale.assign(triangulation.n_active_cells() * n_faces, 1.);
     // Every rank visits every face of the replicated mesh in the same
@@ -109,23 +168,29 @@ namespace amfrac
     for (const auto &cell : triangulation.active_cell_iterators())
       for (unsigned int f = 0; f < n_faces; ++f)
         {
-          if (cell->at_boundary(f) || !cell->neighbor(f)->is_active()
-              || cell->neighbor_is_coarser(f)
+          if (!regular_interior_face(cell, f)
               || !(cell->id() < cell->neighbor(f)->id()))
             continue;
-          const Point<dim> centre = cell->face(f)->center();
-          const double     value  = scale->value(centre);
-          if (!(value > 0) || !std::isfinite(value))
+          const auto         neighbor = cell->neighbor(f);
+          const unsigned int nf       = cell->neighbor_of_neighbor(f);
+          double             value    = inherited(cell, f);
+          if (std::isnan(value))
+            value = inherited(neighbor, nf);
+          if (std::isnan(value))
             {
-              std::ostringstream where;
-              where << "is " << value << " at " << centre
-                    << ": strengths must stay positive and finite";
-              throw InputError("Crack insertion/Strength scale", where.str());
+              const Point<dim> centre = cell->face(f)->center();
+              value                   = scale->value(centre);
+              if (!(value > 0) || !std::isfinite(value))
+                {
+                  std::ostringstream where;
+                  where << "is " << value << " at " << centre
+                        << ": strengths must stay positive and finite";
+                  throw InputError("Crack insertion/Strength scale",
+                                   where.str());
+                }
             }
-          const auto neighbor = cell->neighbor(f);
           crack_strength_scale[cell->active_cell_index() * n_faces + f] = value;
-          crack_strength_scale[neighbor->active_cell_index() * n_faces
-                               + cell->neighbor_of_neighbor(f)]
+          crack_strength_scale[neighbor->active_cell_index() * n_faces + nf]
             = value;
         }
   }

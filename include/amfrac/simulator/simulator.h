@@ -208,10 +208,19 @@ namespace amfrac
      * field, the same on all ranks. */
     std::shared_ptr<Function<dim>> crack_region;
     std::vector<double>            crack_strength_scale;
-    /** Evaluate Crack insertion/Strength scale on every interior face
-     * (InputError unless positive and finite). */
+    /** The strength scale of every regular interior face (both sides),
+     * by CellId and face. */
+    using FaceValues = std::map<std::pair<CellId, unsigned int>, double>;
+    FaceValues
+    strength_scale_by_face() const;
+    /** Evaluate Crack insertion/Strength scale on every regular interior
+     * face (InputError unless positive and finite). After a mesh change
+     * (@p previous: the values before it) a face keeps its value and the
+     * children of a face take their parent's; only new faces (inside a
+     * refined cell, of a coarsened cell, or no longer hanging) are
+     * evaluated, so that remeshing does not draw a random field again. */
     void
-    evaluate_strength_scale();
+    evaluate_strength_scale(const FaceValues *previous = nullptr);
 
     AffineConstraints<double> constraints;
     /** Per prescribed condition: the reduced dofs on its face (and Where)
