@@ -2,6 +2,7 @@
 // faces, the extrinsic law of their points and the rebuild of the interface
 // elements after the DoF layer released new faces.
 #include <algorithm>
+#include <amfrac/base/face_within.h>
 #include <amfrac/cohesive/interface_assembler.h>
 #include <amfrac/parameters/input_error.h>
 #include <deal.II/base/mpi.h>
@@ -105,26 +106,6 @@ namespace amfrac
         add_crack(cell, face);
       }
   }
-
-
-
-  namespace
-  {
-    /** True if @p face is @p parent or one of its descendants. */
-    template <typename FaceIterator>
-    bool
-    face_within(const FaceIterator &face, const FaceIterator &parent)
-    {
-      if (face == parent)
-        return true;
-      if (!parent->has_children())
-        return false;
-      for (unsigned int c = 0; c < parent->n_children(); ++c)
-        if (face_within(face, parent->child(c)))
-          return true;
-      return false;
-    }
-  } // namespace
 
 
 

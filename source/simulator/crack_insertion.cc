@@ -3,6 +3,7 @@
 // load step, the choice of the faces, their release in the tied-copy DoF
 // layer and the move of the Newton state to the new numbering.
 #include <algorithm>
+#include <amfrac/base/face_within.h>
 #include <amfrac/parameters/expressions.h>
 #include <amfrac/parameters/input_error.h>
 #include <amfrac/simulator/simulator.h>
@@ -94,21 +95,6 @@ namespace amfrac
     {
       return !cell->at_boundary(f) && cell->neighbor(f)->is_active()
              && !cell->neighbor_is_coarser(f);
-    }
-
-    /** True if @p face is @p parent or one of its descendants. */
-    template <typename FaceIterator>
-    bool
-    face_within(const FaceIterator &face, const FaceIterator &parent)
-    {
-      if (face == parent)
-        return true;
-      if (!parent->has_children())
-        return false;
-      for (unsigned int c = 0; c < parent->n_children(); ++c)
-        if (face_within(face, parent->child(c)))
-          return true;
-      return false;
     }
 
     /** The Hoffman index beyond which a face cracks, and the smallest

@@ -17,6 +17,15 @@ using namespace amfrac;
 
 namespace
 {
+  std::string
+  file_text(const std::string &name)
+  {
+    std::ifstream     in(name);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+
   template <int dim>
   void
   check_bar(const std::string &file, const std::string &appended)
@@ -104,11 +113,9 @@ namespace
                      const std::string &appended,
                      const std::string &explicit_prm)
   {
-    std::ifstream     in(explicit_prm);
-    std::stringstream text;
-    text << in.rdbuf();
     const auto simulator
-      = amfrac_test::run_scene<dim>(file, appended + "\n" + text.str());
+      = amfrac_test::run_scene<dim>(file,
+                                    appended + "\n" + file_text(explicit_prm));
     const History &history = simulator->history();
     const double   area = 1, Gc = 1;
 
@@ -230,11 +237,8 @@ namespace
                     const std::string &extra,
                     const std::string &appended)
   {
-    std::ifstream     in(extra);
-    std::stringstream text;
-    text << in.rdbuf();
     const auto simulator
-      = amfrac_test::run_scene<dim>(file, text.str() + "\n" + appended);
+      = amfrac_test::run_scene<dim>(file, file_text(extra) + "\n" + appended);
     const History    &history = simulator->history();
     const std::size_t last    = history.n_rows() - 1;
 
