@@ -26,6 +26,19 @@ namespace
     return text.str();
   }
 
+  /** The crack points of all ranks on the section x = 2 and elsewhere. */
+  template <int dim>
+  std::pair<unsigned long, unsigned long>
+  crack_points_at_section(const Simulator<dim> &simulator)
+  {
+    unsigned long on_section = 0, elsewhere = 0;
+    for (const auto &p : simulator.interface_points())
+      if (p.interface == InterfacePointRecord<dim>::crack)
+        (std::abs(p.position[0] - 2) < 1e-9 ? on_section : elsewhere) += 1;
+    return {Utilities::MPI::sum(on_section, MPI_COMM_WORLD),
+            Utilities::MPI::sum(elsewhere, MPI_COMM_WORLD)};
+  }
+
   template <int dim>
   void
   check_bar(const std::string &file, const std::string &appended)
@@ -38,12 +51,7 @@ namespace
 
     // Every crack point lies on the weakened cross-section, which is cut
     // through (2 faces in 2D, 2 x 2 in 3D).
-    unsigned long on_section = 0, elsewhere = 0;
-    for (const auto &p : simulator->interface_points())
-      if (p.interface == InterfacePointRecord<dim>::crack)
-        (std::abs(p.position[0] - 2) < 1e-9 ? on_section : elsewhere) += 1;
-    on_section = Utilities::MPI::sum(on_section, MPI_COMM_WORLD);
-    elsewhere  = Utilities::MPI::sum(elsewhere, MPI_COMM_WORLD);
+    const auto [on_section, elsewhere] = crack_points_at_section(*simulator);
     CHECK(elsewhere == 0);
     CHECK(on_section == (dim == 2 ? 2u * 2 : 4u * 4));
 
@@ -119,13 +127,9 @@ namespace
     const History &history = simulator->history();
     const double   area = 1, Gc = 1;
 
-    unsigned long on_section = 0, elsewhere = 0;
-    for (const auto &p : simulator->interface_points())
-      if (p.interface == InterfacePointRecord<dim>::crack)
-        (std::abs(p.position[0] - 2) < 1e-9 ? on_section : elsewhere) += 1;
-    CHECK(Utilities::MPI::sum(elsewhere, MPI_COMM_WORLD) == 0);
-    CHECK(Utilities::MPI::sum(on_section, MPI_COMM_WORLD)
-          == (dim == 2 ? 2u * 2 : 4u * 4));
+    const auto [on_section, elsewhere] = crack_points_at_section(*simulator);
+    CHECK(elsewhere == 0);
+    CHECK(on_section == (dim == 2 ? 2u * 2 : 4u * 4));
     const std::size_t last = history.n_rows() - 1;
     CHECK(history.value(0, "fragments") == 1);
     CHECK(history.value(last, "fragments") == 2);
@@ -242,15 +246,8 @@ namespace
     const History    &history = simulator->history();
     const std::size_t last    = history.n_rows() - 1;
 
-    double on_section = 0;
-    bool   elsewhere  = false;
-    for (const auto &p : simulator->interface_points())
-      if (p.interface == InterfacePointRecord<dim>::crack)
-        {
-          elsewhere = elsewhere || std::abs(p.position[0] - 2) > 1e-9;
-          on_section += 1;
-        }
-    CHECK(!elsewhere);
+    const auto [on_section, elsewhere] = crack_points_at_section(*simulator);
+    CHECK(elsewhere == 0);
     CHECK(on_section >= 4);
     CHECK_CLOSE(history.value(last, "debonded_cracks"), 1., 1e-9);
     CHECK_CLOSE(history.value(last, "dissipated_cracks"), 1., 0.02);
