@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <amfrac/assembly/bulk_force.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/partitioner.h>
@@ -37,37 +38,77 @@ namespace amfrac
     , kernel(dofs.get_fe().n_dofs_per_cell())
     , interfaces(interfaces)
   {
-    const auto partitioner = std::make_shared<Utilities::MPI::Partitioner>(
-      dofs.locally_owned_dofs(), dofs.locally_relevant_dofs(), comm);
+    // Every cell with an owned dof is evaluated here, owned or not, so
+    // that each owned entry of K u is summed on one rank, term by term as
+    // on a single rank (no partial sums of other ranks).
+    const auto                           cells = dofs.cells_with_owned_dofs();
+    const unsigned int                   n = dofs.get_fe().n_dofs_per_cell();
+    std::vector<types::global_dof_index> indices(n);
+    IndexSet                             ghosts = dofs.locally_relevant_dofs();
+    std::vector<bool>                    evaluated(
+      dofs.copy_handler().get_triangulation().n_active_cells());
+    for (const auto &cell : cells)
+      {
+        evaluated[cell->active_cell_index()] = true;
+        dofs.get_dof_indices(cell, indices);
+        std::sort(indices.begin(), indices.end());
+        ghosts.add_indices(indices.begin(), indices.end());
+      }
+    ghosts.compress();
+    const auto partitioner
+      = std::make_shared<Utilities::MPI::Partitioner>(dofs.locally_owned_dofs(),
+                                                      ghosts,
+                                                      comm);
     u.reinit(partitioner);
     f.reinit(partitioner);
     if (interfaces)
       interfaces->set_local_indices(*partitioner);
+    add_elements(dofs, assembler, evaluated, *partitioner);
+  }
+
+
+
+  template <int dim>
+  void
+  BulkForceOperator<dim>::add_elements(
+    const TiedCopyDoFs<dim>           &dofs,
+    const ElasticAssembler<dim>       &assembler,
+    const std::vector<bool>           &evaluated,
+    const Utilities::MPI::Partitioner &partitioner)
+  {
+    // A shape's matrix is that of the first cell of the mesh with the
+    // shape, whichever rank evaluates it: matrices of translated copies
+    // differ in round-off, which must not depend on the partition.
     const unsigned int                   n = dofs.get_fe().n_dofs_per_cell();
     std::vector<types::global_dof_index> indices(n);
     std::vector<unsigned int>            local(n);
-    std::map<std::vector<long long>, unsigned int> matrix_of_shape;
-    FullMatrix<double>                             K(n, n);
-    std::vector<double>                            row_major(n * n);
+    using Cell = typename TiedCopyDoFs<dim>::CellIterator;
+    // Per shape: its first cell, and its matrix in the kernel (-1: none
+    // yet).
+    std::map<std::vector<long long>, std::pair<Cell, int>> shapes;
+    FullMatrix<double>                                     K(n, n);
+    std::vector<double>                                    row_major(n * n);
     for (const auto &cell : dofs.copy_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          const auto key   = shape_key<dim>(cell);
-          auto       found = matrix_of_shape.find(key);
-          if (found == matrix_of_shape.end())
-            {
-              assembler.element_stiffness(cell, K);
-              for (unsigned int i = 0; i < n; ++i)
-                for (unsigned int j = 0; j < n; ++j)
-                  row_major[i * n + j] = K(i, j);
-              found = matrix_of_shape.emplace(key, kernel.add_matrix(row_major))
-                        .first;
-            }
-          dofs.get_dof_indices(cell, indices);
-          for (unsigned int i = 0; i < n; ++i)
-            local[i] = partitioner->global_to_local(indices[i]);
-          kernel.add_element(found->second, local.data());
-        }
+      {
+        auto &[first, matrix]
+          = shapes.emplace(shape_key<dim>(cell), std::make_pair(cell, -1))
+              .first->second;
+        if (!evaluated[cell->active_cell_index()])
+          continue;
+        if (matrix < 0)
+          {
+            assembler.element_stiffness(first, K);
+            for (unsigned int i = 0; i < n; ++i)
+              for (unsigned int j = 0; j < n; ++j)
+                row_major[i * n + j] = K(i, j);
+            matrix = kernel.add_matrix(row_major);
+          }
+        dofs.get_dof_indices(cell, indices);
+        for (unsigned int i = 0; i < n; ++i)
+          local[i] = partitioner.global_to_local(indices[i]);
+        kernel.add_element(matrix, local.data(), cell->is_locally_owned());
+        owned_elements += cell->is_locally_owned();
+      }
   }
 
 
@@ -84,11 +125,14 @@ namespace amfrac
     Assert(solution.locally_owned_size() == n_owned, ExcInternalError());
     std::copy(solution.begin(), solution.end(), u.begin());
     u.update_ghost_values();
-    f                   = 0;
+    // The ghost entries of f collect partial sums that are not used: each
+    // owned entry is complete here (see the constructor), so there is no
+    // compress().
+    f = 0;
+    f.zero_out_ghost_values();
     const double energy = kernel.apply(u.get_values(), f.get_values());
     if (with_interfaces && interfaces)
       interfaces->add_forces(u.get_values(), f.get_values());
-    f.compress(VectorOperation::add);
     std::copy(f.begin(), f.begin() + n_owned, force.begin());
     return Utilities::MPI::sum(energy, comm);
   }
@@ -99,13 +143,18 @@ namespace amfrac
   std::string
   BulkForceOperator<dim>::summary() const
   {
-    const double elements = Utilities::MPI::sum(1. * kernel.n_elements(), comm);
+    const double elements = Utilities::MPI::sum(1. * owned_elements, comm);
+    const double evaluated
+      = Utilities::MPI::sum(1. * kernel.n_elements(), comm);
     const double matrices = Utilities::MPI::sum(1. * kernel.n_matrices(), comm);
     const double bytes
       = Utilities::MPI::sum(1. * kernel.memory_consumption(), comm);
     std::ostringstream s;
     s << matrices << " element matrices for " << elements << " elements ("
       << bytes / 1048576. << " MB)";
+    if (evaluated > elements)
+      s << ", " << evaluated - elements
+        << " evaluations of neighbours' cells for partition-independent sums";
     return s.str();
   }
 

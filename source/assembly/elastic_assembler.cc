@@ -14,6 +14,26 @@
 
 namespace amfrac
 {
+  namespace
+  {
+    /** f(i) += values(k) for the owned entries i = indices[k] only. Summed
+     * over TiedCopyDoFs::cells_with_owned_dofs() this gives every owned
+     * entry the same sum, term by term, on any number of ranks (no
+     * partial sums of other ranks are added in compress()). */
+    void
+    add_owned(const std::vector<types::global_dof_index> &indices,
+              const dealii::Vector<double>               &values,
+              TrilinosWrappers::MPI::Vector              &f)
+    {
+      // The owned dofs of the copy layer are one contiguous block.
+      const auto [begin, end] = f.local_range();
+      for (unsigned int k = 0; k < indices.size(); ++k)
+        if (indices[k] >= begin && indices[k] < end)
+          f(indices[k]) += values(k);
+    }
+  } // namespace
+
+
   /** FEValues objects and work arrays reused from cell to cell. */
   template <int dim>
   class ElasticAssembler<dim>::Scratch
@@ -162,27 +182,26 @@ namespace amfrac
   ElasticAssembler<dim>::loaded_cells(const Loads<dim> &loads) const
   {
     CellList cells;
-    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          bool loaded = loads.body_force != nullptr;
-          for (const unsigned int face : cell->face_indices())
-            {
-              if (!cell->at_boundary(face))
-                continue;
-              const auto id = cell->face(face)->boundary_id();
-              loaded        = loaded || loads.tractions.count(id) > 0
-                       || loads.pressures.count(id) > 0;
-              // A patch loads only the faces it covers.
-              for (const auto &patch : loads.patches)
-                loaded = loaded
-                         || patch.unit_nodal_forces.count(
-                              {cell->active_cell_index(), face})
-                              > 0;
-            }
-          if (loaded)
-            cells.push_back(cell);
-        }
+    for (const auto &cell : dofs.cells_with_owned_dofs())
+      {
+        bool loaded = loads.body_force != nullptr;
+        for (const unsigned int face : cell->face_indices())
+          {
+            if (!cell->at_boundary(face))
+              continue;
+            const auto id = cell->face(face)->boundary_id();
+            loaded        = loaded || loads.tractions.count(id) > 0
+                     || loads.pressures.count(id) > 0;
+            // A patch loads only the faces it covers.
+            for (const auto &patch : loads.patches)
+              loaded = loaded
+                       || patch.unit_nodal_forces.count(
+                            {cell->active_cell_index(), face})
+                            > 0;
+          }
+        if (loaded)
+          cells.push_back(cell);
+      }
     return cells;
   }
 
@@ -249,7 +268,7 @@ namespace amfrac
         if (std::all_of(cell_f.begin(), cell_f.end(), [](const double v) {
               return std::isfinite(v);
             }))
-          f.add(indices, cell_f);
+          add_owned(indices, cell_f, f);
         else if (finite)
           finite = false, where = cell->center();
       }
@@ -578,14 +597,13 @@ namespace amfrac
     dealii::Vector<double> m(fe.n_dofs_per_cell());
     std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
     mass = 0;
-    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          fe_values.reinit(cell);
-          dofs.get_dof_indices(cell, indices);
-          lobatto_lumped_mass(fe_values, plies[cell->material_id()].density, m);
-          mass.add(indices, m);
-        }
+    for (const auto &cell : dofs.cells_with_owned_dofs())
+      {
+        fe_values.reinit(cell);
+        dofs.get_dof_indices(cell, indices);
+        lobatto_lumped_mass(fe_values, plies[cell->material_id()].density, m);
+        add_owned(indices, m, mass);
+      }
     mass.compress(VectorOperation::add);
   }
 

@@ -23,9 +23,11 @@ namespace amfrac
 
   void
   ElementMatrixKernel::add_element(const unsigned int  matrix,
-                                   const unsigned int *local_dofs)
+                                   const unsigned int *local_dofs,
+                                   const bool          counts)
   {
     element_matrix.push_back(matrix);
+    energy_weight.push_back(counts ? 1. : 0.);
     element_dofs.insert(element_dofs.end(), local_dofs, local_dofs + n);
   }
 
@@ -57,7 +59,7 @@ namespace amfrac
             work += ue[i] * fe[i];
             f[dofs[i]] += fe[i];
           }
-        energy += 0.5 * work;
+        energy += energy_weight[e] * 0.5 * work;
       }
     return energy;
   }
@@ -81,7 +83,7 @@ namespace amfrac
             fe[i] += K[j * n + i] * ue[j];
         for (unsigned int i = 0; i < n; ++i)
           {
-            energy += 0.5 * ue[i] * fe[i];
+            energy += energy_weight[e] * 0.5 * ue[i] * fe[i];
             f[dofs[i]] += fe[i];
           }
       }
@@ -115,6 +117,7 @@ namespace amfrac
   {
     return matrices.capacity() * sizeof(double)
            + (element_matrix.capacity() + element_dofs.capacity())
-               * sizeof(std::uint32_t);
+               * sizeof(std::uint32_t)
+           + energy_weight.capacity() * sizeof(double);
   }
 } // namespace amfrac

@@ -490,6 +490,21 @@ namespace amfrac
             element.start.push_back(element.nonzero.size());
           }
       }
+    std::vector<types::global_dof_index> targets;
+    std::vector<OrderedSums::Key>        keys;
+    first_slot.clear();
+    for (const Element &element : elements)
+      {
+        first_slot.push_back(targets.size());
+        const auto cell = element.cell.template to_binary<dim>();
+        for (unsigned int k = 0; k < element.dofs.size(); ++k)
+          {
+            targets.push_back(element.dofs[k]);
+            keys.push_back(OrderedSums::Key{
+              {cell[0], cell[1], cell[2], cell[3], element.face, k}});
+          }
+      }
+    force_sums.reinit(targets, keys, partitioner);
   }
 
 
@@ -499,22 +514,29 @@ namespace amfrac
   CohesiveInterfaces<dim>::add_forces(const double *u, double *f)
   {
     Tensor<2, dim> D;
-    for (Element &element : elements)
-      for (unsigned int q = 0; q < element.JxW.size(); ++q)
-        {
-          const auto     first = element.nonzero.begin() + element.start[q];
-          const auto     last  = element.nonzero.begin() + element.start[q + 1];
-          Tensor<1, dim> global_gap;
-          for (auto entry = first; entry != last; ++entry)
-            global_gap[element.component[entry->first]]
-              += entry->second * u[element.local_dofs[entry->first]];
-          const Tensor<1, dim> traction
-            = point_force(element, q, global_gap, D);
-          for (auto entry = first; entry != last; ++entry)
-            f[element.local_dofs[entry->first]]
-              += entry->second * traction[element.component[entry->first]];
-          element.converged[q] = element.trial[q];
-        }
+    double        *slots = force_sums.slots();
+    for (unsigned int e = 0; e < elements.size(); ++e)
+      {
+        Element &element = elements[e];
+        double  *r       = slots + first_slot[e];
+        std::fill(r, r + element.dofs.size(), 0.);
+        for (unsigned int q = 0; q < element.JxW.size(); ++q)
+          {
+            const auto first = element.nonzero.begin() + element.start[q];
+            const auto last  = element.nonzero.begin() + element.start[q + 1];
+            Tensor<1, dim> global_gap;
+            for (auto entry = first; entry != last; ++entry)
+              global_gap[element.component[entry->first]]
+                += entry->second * u[element.local_dofs[entry->first]];
+            const Tensor<1, dim> traction
+              = point_force(element, q, global_gap, D);
+            for (auto entry = first; entry != last; ++entry)
+              r[entry->first]
+                += entry->second * traction[element.component[entry->first]];
+            element.converged[q] = element.trial[q];
+          }
+      }
+    force_sums.add_to(f);
   }
 
 

@@ -326,6 +326,27 @@ namespace amfrac
 
 
   template <int dim>
+  std::vector<typename TiedCopyDoFs<dim>::CellIterator>
+  TiedCopyDoFs<dim>::cells_with_owned_dofs() const
+  {
+    std::vector<CellIterator>            cells;
+    std::vector<types::global_dof_index> local(fe->n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(local);
+        if (std::any_of(local.begin(),
+                        local.end(),
+                        [&](const types::global_dof_index c) {
+                          return owned_dofs.is_element(copy_to_reduced[c]);
+                        }))
+          cells.push_back(cell);
+      }
+    return cells;
+  }
+
+
+
+  template <int dim>
   std::size_t
   TiedCopyDoFs<dim>::memory_consumption() const
   {

@@ -13,8 +13,10 @@ namespace amfrac
    * from the element matrices of the locally owned cells, shared among
    * cells of the same ply and shape (ElementMatrixKernel), plus, if given,
    * the cohesive interface forces (CohesiveInterfaces::add_forces), all on
-   * one ghosted copy of u; contributions to ghost dofs are sent to their
-   * owners once.
+   * one ghosted copy of u. Every rank evaluates all cells with a dof it
+   * owns (its own and a layer of its neighbours'), so that each entry of
+   * the force is the same sum in the same order on any number of ranks:
+   * runs on 1 and on N ranks do not drift apart by round-off.
    */
   template <int dim>
   class BulkForceOperator
@@ -41,8 +43,17 @@ namespace amfrac
     summary() const;
 
   private:
+    /** The kernel's elements: the cells flagged in @p evaluated (by
+     * active cell index), in the order of the active cells. */
+    void
+    add_elements(const TiedCopyDoFs<dim>           &dofs,
+                 const ElasticAssembler<dim>       &assembler,
+                 const std::vector<bool>           &evaluated,
+                 const Utilities::MPI::Partitioner &partitioner);
+
     MPI_Comm                                           comm;
     ElementMatrixKernel                                kernel;
+    std::size_t                                        owned_elements = 0;
     CohesiveInterfaces<dim>                           *interfaces;
     mutable LinearAlgebra::distributed::Vector<double> u;
     mutable LinearAlgebra::distributed::Vector<double> f;

@@ -26,12 +26,16 @@ namespace amfrac
     add_matrix(const std::vector<double> &matrix);
 
     /** Add an element with matrix @p matrix and the local indices of its
-     * dofs in the arrays apply() works on. */
+     * dofs in the arrays apply() works on; its strain energy counts only
+     * if @p counts (an element evaluated on several ranks counts on one). */
     void
-    add_element(const unsigned int matrix, const unsigned int *local_dofs);
+    add_element(const unsigned int  matrix,
+                const unsigned int *local_dofs,
+                const bool          counts = true);
 
-    /** f[i] += sum over elements of (K_e u_e)[i] (f is not zeroed);
-     * returns the elements' strain energy 1/2 u_e . K_e u_e. */
+    /** f[i] += sum over elements of (K_e u_e)[i] (f is not zeroed), in the
+     * order the elements were added; returns the strain energy
+     * 1/2 u_e . K_e u_e of the elements that count. */
     double
     apply(const double *u, double *f) const;
 
@@ -54,6 +58,8 @@ namespace amfrac
     unsigned int               n;
     std::vector<double>        matrices;
     std::vector<std::uint32_t> element_matrix;
+    /** 1 if the element's energy counts, else 0. */
+    std::vector<double>        energy_weight;
     std::vector<std::uint32_t> element_dofs;
 
     template <unsigned int N>

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <amfrac/base/ordered_sums.h>
 #include <amfrac/cohesive/camanho_davila_law.h>
 #include <amfrac/cohesive/seed_law.h>
 #include <amfrac/dofs/tied_copy_dofs.h>
@@ -219,7 +220,8 @@ namespace amfrac
     commit();
 
     /** Explicit dynamics: number the element dofs in the local arrays of
-     * @p partitioner (owned, then ghosts) for add_forces(). */
+     * @p partitioner (owned, then ghosts) for add_forces(), and plan the
+     * partition-independent sums of the element forces (collective). */
     void
     set_local_indices(const Utilities::MPI::Partitioner &partitioner);
 
@@ -441,6 +443,12 @@ namespace amfrac
       std::vector<unsigned int>                    start;
       std::vector<std::pair<unsigned int, double>> nonzero;
     };
+
+    /** Explicit dynamics: element forces go to slots (element after
+     * element, its dofs in order: first_slot[e] + k), summed into the
+     * owners' entries by the lower cell, face and local dof. */
+    OrderedSums               force_sums;
+    std::vector<unsigned int> first_slot;
 
     const parameters::CohesiveInterfaces data;
     /** Inserted crack faces, each from both sides; penalty of their law

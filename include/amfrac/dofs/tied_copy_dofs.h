@@ -130,6 +130,15 @@ namespace amfrac
       const types::boundary_id                                  boundary_id,
       const std::function<bool(const types::global_dof_index)> &select) const;
 
+    /** The cells, owned or not, with at least one locally owned dof, in
+     * the order of the active cells (the same on every rank). A sum of
+     * cell contributions over these cells into the owned entries alone
+     * adds, for every owned entry, the same terms in the same order as a
+     * single rank does: the result does not depend on the partition
+     * (ElasticAssembler::lumped_mass(), BulkForceOperator). */
+    std::vector<CellIterator>
+    cells_with_owned_dofs() const;
+
     /** Reduced indices of the dofs of @p cell, in the cell's local order. */
     void
     get_dof_indices(const CellIterator                   &cell,

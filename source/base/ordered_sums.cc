@@ -1,0 +1,127 @@
+#include <algorithm>
+#include <amfrac/base/ordered_sums.h>
+#include <deal.II/base/mpi.h>
+#include <map>
+#include <tuple>
+
+namespace amfrac
+{
+  namespace
+  {
+    /** One contribution: the entry it adds to, its key, and its slot
+     * (global numbering: this rank's slots follow those of lower ranks). */
+    struct Term
+    {
+      types::global_dof_index target;
+      OrderedSums::Key        key;
+      types::global_dof_index slot;
+
+      /** For Utilities::MPI::some_to_some() (which copies the bytes of a
+       * trivially copyable type but needs this to compile). */
+      template <class Archive>
+      void
+      serialize(Archive &archive, const unsigned int)
+      {
+        archive &target &key &slot;
+      }
+
+      bool
+      operator<(const Term &other) const
+      {
+        return std::tie(target, key, slot)
+               < std::tie(other.target, other.key, other.slot);
+      }
+    };
+
+    /** The rank owning global entry @p i, from the first entry of every
+     * rank (contiguous blocks). */
+    unsigned int
+    owner(const std::vector<types::global_dof_index> &begins,
+          const types::global_dof_index               i)
+    {
+      return std::upper_bound(begins.begin(), begins.end(), i) - begins.begin()
+             - 1;
+    }
+  } // namespace
+
+
+
+  void
+  OrderedSums::reinit(const std::vector<types::global_dof_index> &targets,
+                      const std::vector<Key>                     &keys,
+                      const Utilities::MPI::Partitioner          &entries)
+  {
+    AssertDimension(targets.size(), keys.size());
+    const MPI_Comm     comm    = entries.get_mpi_communicator();
+    const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
+    const types::global_dof_index n_mine = targets.size();
+    // This rank's slots follow those of the lower ranks.
+    unsigned long long mine = n_mine, before = 0;
+    MPI_Exscan(&mine, &before, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, comm);
+    const types::global_dof_index first   = my_rank == 0 ? 0 : before;
+    const types::global_dof_index n_slots = Utilities::MPI::sum(mine, comm);
+    entry.clear();
+    slot.clear();
+    start = {0};
+    // No contributions on any rank (deal.II's partitioner cannot number
+    // an empty set on several ranks).
+    if (n_slots == 0)
+      {
+        values.reinit(0);
+        return;
+      }
+    const auto begins
+      = Utilities::MPI::all_gather(comm, entries.local_range().first);
+
+    std::vector<Term>                         terms;
+    std::map<unsigned int, std::vector<Term>> outgoing;
+    for (types::global_dof_index s = 0; s < n_mine; ++s)
+      {
+        const Term         term{targets[s], keys[s], first + s};
+        const unsigned int rank = owner(begins, term.target);
+        (rank == my_rank ? terms : outgoing[rank]).push_back(term);
+      }
+    IndexSet ghosts(n_slots);
+    for (const auto &[rank, received] :
+         Utilities::MPI::some_to_some(comm, outgoing))
+      for (const Term &term : received)
+        {
+          terms.push_back(term);
+          ghosts.add_index(term.slot);
+        }
+    IndexSet owned(n_slots);
+    owned.add_range(first, first + n_mine);
+    const auto partitioner
+      = std::make_shared<Utilities::MPI::Partitioner>(owned, ghosts, comm);
+    values.reinit(partitioner);
+
+    std::sort(terms.begin(), terms.end());
+    for (std::size_t t = 0; t < terms.size(); ++t)
+      {
+        if (t == 0 || terms[t].target != terms[t - 1].target)
+          {
+            if (t > 0)
+              start.push_back(slot.size());
+            entry.push_back(entries.global_to_local(terms[t].target));
+          }
+        slot.push_back(partitioner->global_to_local(terms[t].slot));
+      }
+    if (!terms.empty())
+      start.push_back(slot.size());
+  }
+
+
+
+  void
+  OrderedSums::add_to(double *f)
+  {
+    // Collective unless no rank has contributions (the same on all).
+    if (values.size() == 0)
+      return;
+    values.update_ghost_values();
+    const double *v = values.get_values();
+    for (std::size_t r = 0; r < entry.size(); ++r)
+      for (unsigned int k = start[r]; k < start[r + 1]; ++k)
+        f[entry[r]] += v[slot[k]];
+  }
+} // namespace amfrac
