@@ -47,6 +47,11 @@ namespace amfrac
     IndexSet                             ghosts = dofs.locally_relevant_dofs();
     std::vector<bool>                    evaluated(
       dofs.copy_handler().get_triangulation().n_active_cells());
+    // An owned cell all of whose dofs belong to other ranks is evaluated
+    // too, for its strain energy (its forces are not used here).
+    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        evaluated[cell->active_cell_index()] = true;
     for (const auto &cell : cells)
       {
         evaluated[cell->active_cell_index()] = true;

@@ -128,46 +128,46 @@ namespace amfrac
     dealii::Vector<double> f(fe.n_dofs_per_cell());
     double                 area = 0;
     patch.unit_nodal_forces.clear();
+    // Every rank visits every cell of the replicated mesh, in mesh order:
+    // a patch face of another rank's cell may load this rank's nodes
+    // (assemble_load() keeps owned entries only), and the area is then
+    // the same sum on any number of ranks.
     for (const auto &cell : dofs.copy_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int face : cell->face_indices())
-          {
-            if (!cell->at_boundary(face)
-                || cell->face(face)->boundary_id() != patch.boundary_id)
-              continue;
-            // Faces far from the patch (measured in the face plane: the
-            // center's normal coordinate is ignored) are skipped.
-            const auto geometry         = cell->face(face);
-            Point<dim> in_plane         = geometry->center();
-            in_plane[patch.normal_axis] = patch.center[patch.normal_axis];
-            if (in_plane.distance(patch.center)
-                > patch.reach() + geometry->diameter())
-              continue;
-            fv.reinit(cell, face);
-            f             = 0;
-            double inside = 0;
-            for (const unsigned int q : fv.quadrature_point_indices())
-              {
-                if (!patch.inside(fv.quadrature_point(q)))
-                  continue;
-                inside += fv.JxW(q);
-                const Tensor<1, dim> direction = patch.direction.norm() > 0 ?
-                                                   patch.direction :
-                                                   -fv.normal_vector(q);
-                for (const unsigned int i : dofs.dofs_on_face(face))
-                  f(i) += fv.shape_value(i, q)
-                          * direction[fe.system_to_component_index(i).first]
-                          * fv.JxW(q);
-              }
-            if (inside > 0)
-              {
-                area += inside;
-                patch.unit_nodal_forces[{cell->active_cell_index(), face}] = f;
-              }
-          }
-    const MPI_Comm comm
-      = dofs.copy_handler().get_triangulation().get_communicator();
-    area = Utilities::MPI::sum(area, comm);
+      for (const unsigned int face : cell->face_indices())
+        {
+          if (!cell->at_boundary(face)
+              || cell->face(face)->boundary_id() != patch.boundary_id)
+            continue;
+          // Faces far from the patch (measured in the face plane: the
+          // center's normal coordinate is ignored) are skipped.
+          const auto geometry         = cell->face(face);
+          Point<dim> in_plane         = geometry->center();
+          in_plane[patch.normal_axis] = patch.center[patch.normal_axis];
+          if (in_plane.distance(patch.center)
+              > patch.reach() + geometry->diameter())
+            continue;
+          fv.reinit(cell, face);
+          f             = 0;
+          double inside = 0;
+          for (const unsigned int q : fv.quadrature_point_indices())
+            {
+              if (!patch.inside(fv.quadrature_point(q)))
+                continue;
+              inside += fv.JxW(q);
+              const Tensor<1, dim> direction = patch.direction.norm() > 0 ?
+                                                 patch.direction :
+                                                 -fv.normal_vector(q);
+              for (const unsigned int i : dofs.dofs_on_face(face))
+                f(i) += fv.shape_value(i, q)
+                        * direction[fe.system_to_component_index(i).first]
+                        * fv.JxW(q);
+            }
+          if (inside > 0)
+            {
+              area += inside;
+              patch.unit_nodal_forces[{cell->active_cell_index(), face}] = f;
+            }
+        }
     if (!(area > 0))
       throw InputError("Boundary conditions/Patch load/Center",
                        "the patch covers no part of its face");

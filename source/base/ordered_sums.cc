@@ -2,6 +2,7 @@
 #include <amfrac/base/ordered_sums.h>
 #include <deal.II/base/mpi.h>
 #include <map>
+#include <numeric>
 #include <tuple>
 
 namespace amfrac
@@ -33,14 +34,14 @@ namespace amfrac
       }
     };
 
-    /** The rank owning global entry @p i, from the first entry of every
-     * rank (contiguous blocks). */
+    /** The rank owning global entry @p i, from the end of every rank's
+     * contiguous block (ranks in order; a rank owning nothing has an
+     * empty block, whatever its local_range() says, and is skipped). */
     unsigned int
-    owner(const std::vector<types::global_dof_index> &begins,
+    owner(const std::vector<types::global_dof_index> &ends,
           const types::global_dof_index               i)
     {
-      return std::upper_bound(begins.begin(), begins.end(), i) - begins.begin()
-             - 1;
+      return std::upper_bound(ends.begin(), ends.end(), i) - ends.begin();
     }
   } // namespace
 
@@ -70,15 +71,24 @@ namespace amfrac
         values.reinit(0);
         return;
       }
-    const auto begins
-      = Utilities::MPI::all_gather(comm, entries.local_range().first);
+    // The blocks follow each other in rank order: each ends at the sum of
+    // the owned sizes up to its rank.
+    const auto sizes = Utilities::MPI::all_gather(
+      comm, types::global_dof_index(entries.locally_owned_size()));
+    std::vector<types::global_dof_index> ends(sizes.size());
+    std::partial_sum(sizes.begin(), sizes.end(), ends.begin());
+    AssertThrow(sizes[my_rank] == 0
+                  || entries.local_range().first
+                       == ends[my_rank] - sizes[my_rank],
+                ExcMessage("OrderedSums: the owned entries must be blocks "
+                           "in rank order"));
 
     std::vector<Term>                         terms;
     std::map<unsigned int, std::vector<Term>> outgoing;
     for (types::global_dof_index s = 0; s < n_mine; ++s)
       {
         const Term         term{targets[s], keys[s], first + s};
-        const unsigned int rank = owner(begins, term.target);
+        const unsigned int rank = owner(ends, term.target);
         (rank == my_rank ? terms : outgoing[rank]).push_back(term);
       }
     IndexSet ghosts(n_slots);

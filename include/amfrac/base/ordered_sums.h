@@ -32,9 +32,10 @@ namespace amfrac
      * global entry targets[s], in the order of keys[s] among the
      * contributions to that entry (equal keys: an order of the slots that
      * may depend on the partition; keys are meant to be unique).
-     * @p entries numbers the entries of the vector add_to() adds to (its
-     * owned entries are those summed here; targets must be owned or ghost
-     * entries). */
+     * @p entries numbers the entries of the vector add_to() adds to: each
+     * rank owns one contiguous block, the blocks in rank order (as the
+     * TiedCopyDoFs numbering has them); targets must be owned or ghost
+     * entries. */
     void
     reinit(const std::vector<types::global_dof_index> &targets,
            const std::vector<Key>                     &keys,
