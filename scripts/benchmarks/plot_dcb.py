@@ -1,8 +1,9 @@
 #!/usr/bin/python3
-"""Load-opening curves of 2D DCB runs against beam theory.
+"""Load-opening curves of 2D and 3D DCB runs against beam theory.
 
 usage: /usr/bin/python3 plot_dcb.py [--data mi|as4peek] OUT.png LABEL=history.csv [...]
-The curves are P = b force_x- (N) against the opening t (mm); the reference
+The curves are P = b force_x- (N; force_x- itself in 3D runs, whose
+history has z reactions) against the opening t (mm); the reference
 lines are the corrected-beam-theory loading line up to the onset and the
 propagation envelope P = sqrt(2 (G b)^1.5 (E I)^0.5 / (3 delta)) of
 ../shared/reference/README.md section 1 (mi: Mi et al. / Alfano & Crisfield
@@ -41,8 +42,11 @@ ax.plot(ds, [envelope(d) for d in ds], "k--", lw=1)
 for item in args[1:]:
     label, path = item.split("=", 1)
     rows = list(csv.DictReader(open(path)))
+    # 2D: per unit width; 3D: the whole width
+    scale = 1 if any(c.endswith("_z") for c in rows[0]) else b
     ax.plot([float(r["time"]) for r in rows],
-            [b * float(r["force_x-"]) for r in rows], lw=1.2, label=label)
+            [scale * float(r["force_x-"]) for r in rows], lw=1.2,
+            label=label)
 ax.set_xlabel("opening $\\delta$ [mm]")
 ax.set_ylabel("load P [N]")
 ax.set_xlim(0, xmax)

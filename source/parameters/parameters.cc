@@ -1496,6 +1496,17 @@ namespace amfrac
           "interfaces or crack insertion (the process-zone rule for "
           "scenes with cohesive interfaces); a linear scene adapts by "
           "Refinement cycles");
+      if (dimension == 2 && adaptivity.process_zone_axes == 2)
+        throw InputError("Adaptivity/Process zone directions",
+                         "y is the thickness of a 2D laminate; the process-"
+                         "zone rule refines along the plies (x)");
+      if (dimension == 3 && adaptivity.process_zone_axes != 3
+          && adaptivity.by_estimator())
+        throw InputError("Adaptivity/Process zone directions",
+                         "the estimator's marks during the load history "
+                         "(Refine every, Error threshold) refine along x "
+                         "and y, and one of the two cannot be kept from "
+                         "the process zone's cells; use xy with them");
       if (dimension == 3 && adaptivity.during_history()
           && !geometry.refinement_region.empty())
         throw InputError("Geometry/Refinement region",
@@ -1851,11 +1862,22 @@ namespace amfrac
                         "sigma_N^2 [mm] around every delamination front, "
                         "i.e. within l_cz of the bonded points that lie "
                         "within l_cz of a damaged or debonded point: then "
-                        "cells within 2 l_cz are refined (along the plies "
-                        "in 2D, isotropically in 3D) and cells farther than "
-                        "3 l_cz coarsened (never below the initial mesh). "
-                        "Checked after every converged step and before the "
-                        "first (0: off).");
+                        "cells within 2 l_cz are refined along the plies "
+                        "(never through the thickness) and cells farther "
+                        "than 3 l_cz coarsened (never below the initial "
+                        "mesh). Checked after every converged step and "
+                        "before the first (0: off).");
+      prm.declare_entry("Process zone directions",
+                        "xy",
+                        Patterns::Selection("xy|x|y"),
+                        "3D: the in-plane directions along which the "
+                        "process-zone rule measures the element size and "
+                        "refines. xy for fronts of any shape; x when every "
+                        "front runs across the width (y) and advances along "
+                        "x, as in a DCB, ENF or MMB strip: the cells then "
+                        "keep their size across the width, which the rule "
+                        "does not need to resolve (and y likewise). 2D: "
+                        "only x, the one direction along the plies.");
       prm.leave_subsection();
     }
 
@@ -1880,6 +1902,8 @@ namespace amfrac
       refine_every           = prm.get_integer("Refine every");
       error_threshold        = prm.get_double("Error threshold");
       process_zone_elements  = prm.get_integer("Process zone elements");
+      const std::string axes = prm.get("Process zone directions");
+      process_zone_axes      = axes == "x" ? 1 : axes == "y" ? 2 : 3;
       prm.leave_subsection();
       if (strategy == Strategy::error_target && estimator == Estimator::kelly)
         throw InputError("Adaptivity/Strategy",

@@ -224,6 +224,10 @@ namespace amfrac
     make_probe();
     if (field_output)
       field_output->clear_cell_fields();
+    // The solver refers to the matrix: it goes first.
+    if (newton_solver)
+      newton_solver->release();
+    solver_ready = false;
     system_matrix.clear();
   }
 

@@ -558,6 +558,7 @@ namespace amfrac
     run.put_integer("newton.factorizations", n_factorizations);
     run.put("newton.force_scale", newton->force_scale);
     run.put("newton.external_work", newton->external_work);
+    run.put("newton.remeshing_energy", newton->remeshing_energy);
     run.put("newton.converged_force", newton->converged_force);
     save_vector(part, "displacement", newton->converged_solution);
     save_vector(part, "previous_residual", newton->previous_residual);
@@ -586,10 +587,11 @@ namespace amfrac
       progress.by_dissipation   = run.get_integer("newton.by_dissipation");
       const auto &its           = run.get_integers("newton.iterations");
       progress.iterations.assign(its.begin(), its.end());
-      n_factorizations        = run.get_integer("newton.factorizations");
-      newton->force_scale     = run.get_scalar("newton.force_scale");
-      newton->external_work   = run.get_scalar("newton.external_work");
-      newton->converged_force = run.get_scalar("newton.converged_force");
+      n_factorizations         = run.get_integer("newton.factorizations");
+      newton->force_scale      = run.get_scalar("newton.force_scale");
+      newton->external_work    = run.get_scalar("newton.external_work");
+      newton->remeshing_energy = run.get_scalar("newton.remeshing_energy");
+      newton->converged_force  = run.get_scalar("newton.converged_force");
       restore_vector("displacement", newton->converged_solution);
       restore_vector("previous_residual", newton->previous_residual);
       restore_vector("previous_load", newton->previous_load);

@@ -532,10 +532,12 @@ namespace amfrac
     const auto report
       = rebuild_crack_elements(ghosted(converged), ghosted(trial));
     // The matrix pattern takes the couplings of the new crack elements.
-    const double external_work = newton->external_work;
+    const double external_work    = newton->external_work;
+    const double remeshing_energy = newton->remeshing_energy;
     setup_newton();
-    newton->external_work = external_work;
-    solution              = trial;
+    newton->external_work    = external_work;
+    newton->remeshing_energy = remeshing_energy;
+    solution                 = trial;
 
     // The reactions of the converged state on the new numbering start the
     // trapezoidal rule of the external work of the step solved again.

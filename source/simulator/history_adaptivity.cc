@@ -13,26 +13,30 @@ namespace amfrac
   {
     namespace bgi = boost::geometry::index;
 
-    /** Refinement along the plies: x in 2D (y is the thickness), x and y
-     * in 3D. */
+    /** Refinement along the in-plane axes of the mask @p axes (bit a for
+     * axis a): x in 2D (y is the thickness), x and/or y in 3D. */
     template <int dim>
     RefinementCase<dim>
-    in_plane_cut()
+    in_plane_cut(const unsigned int axes = 3)
     {
-      return dim == 2 ? RefinementCase<dim>::cut_x :
-                        RefinementCase<dim>(RefinementCase<3>::cut_xy);
+      if (dim == 2)
+        return RefinementCase<dim>::cut_x;
+      return RefinementCase<dim>((axes & 1 ? RefinementCase<3>::cut_x : 0)
+                                 | (axes & 2 ? RefinementCase<3>::cut_y : 0));
     }
 
-    /** The largest extent of @p cell along the plies (every reference
-     * direction but the last, which is the laminate's thickness). */
+    /** The largest extent of @p cell along the in-plane axes of the mask
+     * @p axes (every reference direction but the last, which is the
+     * laminate's thickness). */
     template <typename CellIterator>
     double
-    in_plane_size(const CellIterator &cell)
+    in_plane_size(const CellIterator &cell, const unsigned int axes)
     {
       constexpr int dim = CellIterator::AccessorType::dimension;
       double        h   = 0;
       for (unsigned int a = 0; a + 1 < dim; ++a)
-        h = std::max(h, cell->extent_in_direction(a));
+        if (axes & (1U << a))
+          h = std::max(h, cell->extent_in_direction(a));
       return h;
     }
 
@@ -71,6 +75,8 @@ namespace amfrac
   Simulator<dim>::mark_process_zone(const bool coarsen)
   {
     const unsigned int n = parameters.adaptivity.process_zone_elements;
+    const unsigned int axes
+      = dim == 2 ? 1 : parameters.adaptivity.process_zone_axes;
 
     const auto front = interfaces->front_points(process_zone_lengths(), comm);
     if (front.empty())
@@ -88,7 +94,7 @@ namespace amfrac
         const double reach = closest[0].second;
         const double distance
           = cell->center().distance(closest[0].first) - 0.5 * cell->diameter();
-        const bool coarse = in_plane_size(cell) > reach / n * (1 + 1e-9);
+        const bool coarse = in_plane_size(cell, axes) > reach / n * (1 + 1e-9);
         where.emplace_back(distance / reach, coarse);
         needed = needed || (coarse && distance <= reach);
       }
@@ -98,10 +104,11 @@ namespace amfrac
     // of the mesh costs a transfer, a new matrix and a factorization).
     if (!needed)
       return;
-    // Along the plies only (cut_x in 2D, cut_xy in 3D): the rule is about
-    // the in-plane size, and refining through the thickness as well
-    // multiplies the unknowns and the direct solver's fill for nothing.
-    const RefinementCase<dim> cut = in_plane_cut<dim>();
+    // Along the plies only (cut_x in 2D, the chosen in-plane axes in 3D):
+    // the rule is about the in-plane size, and refining through the
+    // thickness as well multiplies the unknowns and the direct solver's
+    // fill for nothing.
+    const RefinementCase<dim> cut = in_plane_cut<dim>(axes);
     for (const auto &cell : triangulation.active_cell_iterators())
       {
         const auto [distance, coarse] = where[cell->active_cell_index()];
@@ -134,7 +141,10 @@ namespace amfrac
     // estimators keep refining through the thickness as well.
     if (dim == 2)
       return;
-    const RefinementCase<dim> cut = in_plane_cut<dim>();
+    // Parameter checks keep the estimator (both axes) and a one-axis
+    // process-zone rule apart, so one cut serves every cell.
+    const RefinementCase<dim> cut
+      = in_plane_cut<dim>(parameters.adaptivity.process_zone_axes);
     const auto cells_at = GridTools::vertex_to_cell_map(triangulation);
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->refine_flag_set())
@@ -224,7 +234,10 @@ namespace amfrac
     std::vector<Ledger>                              before, after;
     {
       TimerOutput::Scope scope(timer, "refine and transfer");
-      before                          = interfaces->ledger(comm);
+      before = interfaces->ledger(comm);
+      const double stored_before
+        = bulk_strain_energy(newton->converged_solution)
+          + total(before, &Ledger::work);
       const auto             snapshot = interfaces->snapshot(comm);
       dealii::Vector<double> copies;
       dof_layer.expand_all(dof_layer.replicate(newton->converged_solution),
@@ -239,11 +252,13 @@ namespace amfrac
       displacement.interpolate(copies, new_copies);
 
       // A new Newton state on the new mesh, with the run's totals.
-      const double external_work = newton->external_work;
+      const double external_work    = newton->external_work;
+      const double remeshing_energy = newton->remeshing_energy;
       setup_newton();
       if (parameters.nonlinear_solver.dissipation_control)
         setup_load_pattern(false, "dissipation or opening");
-      newton->external_work = external_work;
+      newton->external_work    = external_work;
+      newton->remeshing_energy = remeshing_energy;
       dof_layer.gather(new_copies, newton->converged_solution);
       make_constraints(t, constraints, false);
       constraints.distribute(newton->converged_solution);
@@ -261,6 +276,8 @@ namespace amfrac
       newton->converged_force   = load_force(newton->residual);
       solver_ready              = false;
       after                     = interfaces->ledger(comm);
+      newton->remeshing_energy += bulk_strain_energy(solution)
+                                  + total(after, &Ledger::work) - stored_before;
     }
     if (!cycle_summary)
       cycle_summary = std::make_unique<History>(
@@ -282,7 +299,8 @@ namespace amfrac
        {"injected_points", report.injected},
        {"aggregated_points", report.aggregated},
        {"beyond_history", report.beyond_history},
-       {"interface_force_imbalance", report.force_imbalance}});
+       {"interface_force_imbalance", report.force_imbalance},
+       {"remeshing_energy", newton->remeshing_energy}});
     pcout << "  adapted after step " << step << ": "
           << triangulation.n_global_active_cells() << " cells, "
           << dof_layer.n_dofs() << " unknowns; interface history of "

@@ -83,6 +83,9 @@ namespace amfrac
     if (interfaces)
       interfaces->add_couplings(newton->increment_constraints, pattern);
     pattern.compress();
+    if (newton_solver)
+      newton_solver->release();
+    solver_ready = false;
     system_matrix.reinit(pattern);
     AffineConstraints<double> none;
     none.close();
@@ -689,28 +692,49 @@ namespace amfrac
       for (const auto i : support)
         if (dof_layer.locally_owned_dofs().is_element(i))
           work += 0.5 * (n.previous_residual(i) + n.residual(i)) * delta(i);
-    work            = Utilities::MPI::sum(work, comm);
+    work = Utilities::MPI::sum(work, comm);
+    if (parameters.adaptivity.during_history())
+      {
+        // A state moved to a new mesh is out of balance at its free dofs;
+        // the work of those forces while it settles belongs to the mesh
+        // change (in a converged state they are round-off).
+        Vector residual_sum = n.previous_residual;
+        residual_sum += n.residual;
+        n.remeshing_energy += 0.5 * (residual_sum * delta) - work;
+      }
     Vector load_sum = n.previous_load;
     load_sum += n.external_load;
     work += 0.5 * (load_sum * delta);
     n.external_work += work;
 
-    double strain_energy = n.strain_energy;
-    if (!finite_strain)
-      {
-        Vector Ku = solution;
-        n.bulk_unconstrained.vmult(Ku, solution);
-        strain_energy = 0.5 * (Ku * solution);
-      }
+    const double strain_energy = bulk_strain_energy(solution);
 
     std::vector<std::pair<std::string, double>> columns
       = {{"external_work", n.external_work}, {"strain_energy", strain_energy}};
     const double interface_work = add_interface_columns(columns);
+    // Only scenes whose mesh changes during the history have the term.
+    if (parameters.adaptivity.during_history())
+      columns.emplace_back("remeshing_energy", n.remeshing_energy);
     columns.emplace_back("balance_error",
-                         n.external_work - strain_energy - interface_work);
+                         n.external_work + n.remeshing_energy - strain_energy
+                           - interface_work);
     n.previous_residual = n.residual;
     n.previous_load     = n.external_load;
     return columns;
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::bulk_strain_energy(const Vector &u) const
+  {
+    // A total Lagrangian run has it from its last residual (of u).
+    if (finite_strain)
+      return newton->strain_energy;
+    Vector Ku = u;
+    newton->bulk_unconstrained.vmult(Ku, u);
+    return 0.5 * (Ku * u);
   }
 
 
@@ -760,7 +784,8 @@ namespace amfrac
   Simulator<dim>::run_newton()
   {
     setup_newton();
-    LinearSolver solver(parameters.linear_solver);
+    newton_solver = std::make_unique<LinearSolver>(parameters.linear_solver);
+    LinearSolver &solver = *newton_solver;
     // Softening and friction make the tangent unsymmetric.
     solver.set_symmetric(false);
     // A singular tangent shows up as a Newton step that does not converge.
@@ -1043,4 +1068,9 @@ namespace amfrac
   Simulator<2>::run_newton();
   template void
   Simulator<3>::run_newton();
+  // also called by the transfer (history_adaptivity.cc)
+  template double
+  Simulator<2>::bulk_strain_energy(const Vector &) const;
+  template double
+  Simulator<3>::bulk_strain_energy(const Vector &) const;
 } // namespace amfrac

@@ -35,6 +35,17 @@ namespace amfrac
 
 
 
+  void
+  LinearSolver::release()
+  {
+    direct.reset();
+    direct_problem.reset();
+    amg.reset();
+    matrix = nullptr;
+  }
+
+
+
   std::string
   LinearSolver::name() const
   {
@@ -53,6 +64,7 @@ namespace amfrac
     const std::vector<std::vector<double>> &node_coordinates)
   {
     Timer timer;
+    release(); // the old solver refers to its problem
     matrix = &system_matrix;
     if (parameters.type == parameters::LinearSolver::Type::direct)
       {
@@ -60,7 +72,6 @@ namespace amfrac
         // singular stiffness (a laminate free to move) gets a message that
         // names the likely cause. (MatrixProperty = SPD and the METIS
         // ordering were tried: no change in MUMPS' flops or time here.)
-        direct.reset(); // it refers to the problem
         direct_problem = std::make_unique<Epetra_LinearProblem>();
         direct_problem->SetOperator(
           const_cast<Epetra_CrsMatrix *>(&system_matrix.trilinos_matrix()));

@@ -380,6 +380,24 @@ expect adaptivity_history_linear "Adaptivity/Process zone elements" "$base
 subsection Adaptivity
   set Process zone elements = 2
 end"
+expect process_zone_y_in_2d "Adaptivity/Process zone directions" "$base
+set Dimension = 2
+subsection Cohesive interfaces
+  set Interfaces = all
+end
+subsection Adaptivity
+  set Process zone elements   = 2
+  set Process zone directions = y
+end"
+expect process_zone_x_with_estimator "Adaptivity/Process zone directions" "$base
+subsection Cohesive interfaces
+  set Interfaces = all
+end
+subsection Adaptivity
+  set Process zone elements   = 2
+  set Process zone directions = x
+  set Refine every            = 5
+end"
 expect adaptivity_history_explicit "Adaptivity/Refinement cycles" "$base
 subsection Cohesive interfaces
   set Interfaces = all

@@ -342,6 +342,10 @@ namespace amfrac
       unsigned int refine_every;
       double       error_threshold;
       unsigned int process_zone_elements;
+      /** The in-plane axes along which the process-zone rule measures and
+       * refines cells in 3D: bit a for axis a (x = 1, y = 2, both = 3).
+       * In 2D only x, the one axis along the plies. */
+      unsigned int process_zone_axes;
 
       bool
       active() const

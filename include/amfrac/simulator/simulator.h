@@ -260,6 +260,12 @@ namespace amfrac
       Vector previous_residual;
       Vector previous_load;
       double external_work = 0;
+      /** What the transfers to new meshes changed in the stored energy
+       * (bulk strain energy plus the interfaces' work), and the work of
+       * the out-of-balance forces of a transferred state while it
+       * settles in the step after: a mesh change does no external work,
+       * so the balance counts it separately. */
+      double remeshing_energy = 0;
       /** Dissipation control: the prescribed displacements at t = 1
        * (hanging nodes interpolated), K_T of it (unconstrained, then
        * condensed), a second Newton direction, and the force conjugate to
@@ -315,8 +321,12 @@ namespace amfrac
     double seconds_in_checkpoints = 0;
 
     std::unique_ptr<NewtonState> newton;
-    bool                         solver_ready     = false;
-    unsigned int                 n_factorizations = 0;
+    /** The linear solver of run_newton(), here so that setup_newton() can
+     * release it before system_matrix changes (declared after
+     * system_matrix: destroyed first). */
+    std::unique_ptr<LinearSolver> newton_solver;
+    bool                          solver_ready     = false;
+    unsigned int                  n_factorizations = 0;
 
     struct NewtonReport
     {
@@ -642,6 +652,10 @@ namespace amfrac
      * interface tractions. */
     double
     add_interface_columns(std::vector<std::pair<std::string, double>> &columns);
+    /** 1/2 u.K u of the bulk (small strain), or the strain energy of the
+     * last residual evaluation (total Lagrangian, which evaluated u). */
+    double
+    bulk_strain_energy(const Vector &u) const;
     void
     setup_newton();
     NewtonReport

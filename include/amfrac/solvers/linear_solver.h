@@ -44,6 +44,15 @@ namespace amfrac
                const unsigned int                      n_pde_equations,
                const std::vector<std::vector<double>> &node_coordinates);
 
+    /** Forget the factorization (or the AMG hierarchy) and the matrix.
+     * Call it before that matrix is reinitialized or destroyed: Amesos'
+     * MUMPS reads the matrix (its communicator) when it is destroyed, and
+     * a matrix freed first makes that a read of freed memory (it crashed
+     * after two mesh changes in a row). The next solve needs
+     * initialize(). */
+    void
+    release();
+
     /** Redo the factorization (or the AMG hierarchy on the old
      * aggregates) after the values of the last matrix changed, its pattern
      * not. Returns the wall time it took. */
