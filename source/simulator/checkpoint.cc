@@ -559,6 +559,7 @@ namespace amfrac
     run.put("newton.force_scale", newton->force_scale);
     run.put("newton.external_work", newton->external_work);
     run.put("newton.remeshing_energy", newton->remeshing_energy);
+    run.put_integer("newton.settling", newton->settling);
     run.put("newton.converged_force", newton->converged_force);
     save_vector(part, "displacement", newton->converged_solution);
     save_vector(part, "previous_residual", newton->previous_residual);
@@ -591,6 +592,7 @@ namespace amfrac
       newton->force_scale      = run.get_scalar("newton.force_scale");
       newton->external_work    = run.get_scalar("newton.external_work");
       newton->remeshing_energy = run.get_scalar("newton.remeshing_energy");
+      newton->settling         = run.get_integer("newton.settling") != 0;
       newton->converged_force  = run.get_scalar("newton.converged_force");
       restore_vector("displacement", newton->converged_solution);
       restore_vector("previous_residual", newton->previous_residual);

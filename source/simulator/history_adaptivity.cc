@@ -259,6 +259,7 @@ namespace amfrac
         setup_load_pattern(false, "dissipation or opening");
       newton->external_work    = external_work;
       newton->remeshing_energy = remeshing_energy;
+      newton->settling         = true;
       dof_layer.gather(new_copies, newton->converged_solution);
       make_constraints(t, constraints, false);
       constraints.distribute(newton->converged_solution);

@@ -693,14 +693,15 @@ namespace amfrac
         if (dof_layer.locally_owned_dofs().is_element(i))
           work += 0.5 * (n.previous_residual(i) + n.residual(i)) * delta(i);
     work = Utilities::MPI::sum(work, comm);
-    if (parameters.adaptivity.during_history())
+    if (n.settling)
       {
         // A state moved to a new mesh is out of balance at its free dofs;
         // the work of those forces while it settles belongs to the mesh
-        // change (in a converged state they are round-off).
+        // change.
         Vector residual_sum = n.previous_residual;
         residual_sum += n.residual;
         n.remeshing_energy += 0.5 * (residual_sum * delta) - work;
+        n.settling = false;
       }
     Vector load_sum = n.previous_load;
     load_sum += n.external_load;
@@ -729,7 +730,8 @@ namespace amfrac
   double
   Simulator<dim>::bulk_strain_energy(const Vector &u) const
   {
-    // A total Lagrangian run has it from its last residual (of u).
+    // A total Lagrangian run has it from its last residual, which every
+    // caller has just evaluated at u.
     if (finite_strain)
       return newton->strain_energy;
     Vector Ku = u;

@@ -17,7 +17,7 @@ namespace amfrac
   {
   public:
     /** Version of the layout; read() refuses any other. */
-    static constexpr std::int64_t format_version = 2;
+    static constexpr std::int64_t format_version = 3;
 
     void
     put(const std::string &name, const std::vector<double> &values)

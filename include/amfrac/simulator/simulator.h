@@ -266,6 +266,11 @@ namespace amfrac
        * settles in the step after: a mesh change does no external work,
        * so the balance counts it separately. */
       double remeshing_energy = 0;
+      /** The state was moved to a new mesh and the next converged step
+       * has not been booked yet (its out-of-balance work goes to
+       * remeshing_energy; other steps keep theirs in the balance error,
+       * which then still shows the Newton tolerance). */
+      bool settling = false;
       /** Dissipation control: the prescribed displacements at t = 1
        * (hanging nodes interpolated), K_T of it (unconstrained, then
        * condensed), a second Newton direction, and the force conjugate to
