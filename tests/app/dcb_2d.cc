@@ -23,6 +23,7 @@
 // (EXTRA.prm is appended to the scene, e.g. another path-following
 // control).
 #include "../check.h"
+#include "beam_theory.h"
 
 #include <algorithm>
 #include <amfrac/parameters/parameters.h>
@@ -75,34 +76,19 @@ namespace
     return data.width * h.value(row, "force_x-");
   }
 
-  std::size_t
-  peak_row(const History &h)
-  {
-    std::size_t best = 0;
-    for (std::size_t r = 0; r < h.n_rows(); ++r)
-      if (load(h, r) > load(h, best))
-        best = r;
-    return best;
-  }
+  using amfrac_test::peak_row;
 
   double
   envelope(const double delta)
   {
-    const double I = data.width * std::pow(data.h, 3) / 12;
-    return std::sqrt(2 * std::pow(data.G_Ic * data.width, 1.5)
-                     * std::sqrt(data.E11 * I) / (3 * delta));
+    return amfrac_test::dcb_envelope(
+      data.G_Ic, data.width, data.E11, data.h, delta);
   }
 
-  /** The row whose opening is nearest @p delta after the peak. */
   std::size_t
   row_at(const History &h, const double delta)
   {
-    std::size_t best = peak_row(h);
-    for (std::size_t r = best; r < h.n_rows(); ++r)
-      if (std::abs(h.value(r, "time") - delta)
-          < std::abs(h.value(best, "time") - delta))
-        best = r;
-    return best;
+    return amfrac_test::row_after_peak_at(h, delta);
   }
 
   double

@@ -16,6 +16,7 @@
 //
 // usage: app_dcb_3d SCENE.prm WORKDIR
 #include "../check.h"
+#include "beam_theory.h"
 #include "scene.h"
 
 #include <algorithm>
@@ -33,32 +34,11 @@ namespace
   double
   envelope(const double delta, const double width)
   {
-    const double I = width * std::pow(h, 3) / 12;
-    return std::sqrt(2 * std::pow(G_Ic * width, 1.5) * std::sqrt(E11 * I)
-                     / (3 * delta));
+    return amfrac_test::dcb_envelope(G_Ic, width, E11, h, delta);
   }
 
-  std::size_t
-  peak_row(const History &history)
-  {
-    std::size_t best = 0;
-    for (std::size_t r = 0; r < history.n_rows(); ++r)
-      if (history.value(r, "force_x-") > history.value(best, "force_x-"))
-        best = r;
-    return best;
-  }
-
-  /** The row after the peak whose opening is nearest @p delta. */
-  std::size_t
-  row_at(const History &history, const double delta)
-  {
-    std::size_t best = peak_row(history);
-    for (std::size_t r = best; r < history.n_rows(); ++r)
-      if (std::abs(history.value(r, "time") - delta)
-          < std::abs(history.value(best, "time") - delta))
-        best = r;
-    return best;
-  }
+  using amfrac_test::peak_row;
+  using amfrac_test::row_after_peak_at;
 
   /** Extent of @p cell along axis @p a from its vertices. */
   template <typename Cell>
@@ -103,7 +83,7 @@ main(int argc, char *argv[])
   CHECK_CLOSE(peak / (onset * scale), 1, 0.03);
   for (const double delta : {3.88, 5.82})
     {
-      const std::size_t r = row_at(history, delta);
+      const std::size_t r = row_after_peak_at(history, delta);
       const double      P = history.value(r, "force_x-");
       const double      d = history.value(r, "time");
       std::cout << "delta " << d << ": " << P << " N (envelope "
@@ -113,7 +93,7 @@ main(int argc, char *argv[])
     }
 
   const std::size_t last = history.n_rows() - 1;
-  const std::size_t from = row_at(history, 3.88);
+  const std::size_t from = row_after_peak_at(history, 3.88);
   const double      new_crack
     = history.value(last, "debonded_i0") - history.value(from, "debonded_i0");
   const double dissipated = history.value(last, "dissipated_i0")
