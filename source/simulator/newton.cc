@@ -885,8 +885,9 @@ namespace amfrac
             // by 3-4 nominal steps, on a mesh refined through the
             // thickness at the front more, so the bound on a regular step
             // is 8 nominal steps.
-            if (!report.converged || trial_t > end || trial_t < 0
-                || std::abs(trial_t - t) > 8 * nominal)
+            const bool regular = report.converged && trial_t >= 0
+                                 && std::abs(trial_t - t) <= 8 * nominal;
+            if (!regular || trial_t > end)
               {
                 pcout << "  t=" << trial_t << ": " << control
                       << " control did not converge or left the path"
@@ -895,6 +896,26 @@ namespace amfrac
                 trial_t = std::min(t + dt, end);
                 set_interface_time_step(trial_t - t);
                 report = solve_newton_step(trial_t, solver);
+                // A regular step that crossed End time, and End time on a
+                // snap-back that displacement steps cannot follow: the run
+                // ends with the step that crossed it. (Not when the
+                // displacement step failed for a reason, a NaN load say:
+                // the failure path names it.)
+                if (regular && !report.converged && report.failure.empty()
+                    && std::all_of(report.residuals.begin(),
+                                   report.residuals.end(),
+                                   [](const double r) {
+                                     return std::isfinite(r);
+                                   }))
+                  {
+                    pcout << "  t=" << trial_t << ": End time lies on a "
+                          << "snap-back of the path; the run ends with the "
+                          << control << " step that crosses it" << std::endl;
+                    set_interface_time_step(nominal);
+                    report = p.opening_control ?
+                               solve_opening_step(t, dtau, trial_t, solver) :
+                               solve_dissipation_step(t, dtau, trial_t, solver);
+                  }
               }
           }
         else
