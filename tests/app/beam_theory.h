@@ -4,12 +4,14 @@
 // (../shared/reference/README.md sections 1 and 2) and running a shipped
 // scene.
 
+#include <algorithm>
 #include <amfrac/postprocess/history.h>
 #include <cmath>
 #include <cstddef>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace amfrac_test
 {
@@ -60,6 +62,19 @@ namespace amfrac_test
           < std::abs(h.value(best, "time") - delta))
         best = r;
     return best;
+  }
+
+  /** The median of the column newton_iterations of a history. */
+  inline double
+  median_newton_iterations(const amfrac::History &h)
+  {
+    std::vector<double> iterations;
+    for (std::size_t r = 0; r < h.n_rows(); ++r)
+      iterations.push_back(h.value(r, "newton_iterations"));
+    std::nth_element(iterations.begin(),
+                     iterations.begin() + iterations.size() / 2,
+                     iterations.end());
+    return iterations[iterations.size() / 2];
   }
 
   /** The scene file @p path with, appended (later entries win), the load
