@@ -532,12 +532,8 @@ namespace amfrac
     const auto report
       = rebuild_crack_elements(ghosted(converged), ghosted(trial));
     // The matrix pattern takes the couplings of the new crack elements.
-    const double external_work    = newton->external_work;
-    const double remeshing_energy = newton->remeshing_energy;
     setup_newton();
-    newton->external_work    = external_work;
-    newton->remeshing_energy = remeshing_energy;
-    solution                 = trial;
+    solution = trial;
 
     // The reactions of the converged state on the new numbering start the
     // trapezoidal rule of the external work of the step solved again.
@@ -546,7 +542,6 @@ namespace amfrac
     update_residual(newton->converged_solution, nullptr);
     newton->previous_residual = newton->residual;
     newton->previous_load     = newton->external_load;
-    solver_ready              = false;
 
     std::ostringstream line;
     line << "  t=" << t << ": " << chosen.size()

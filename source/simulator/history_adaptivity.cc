@@ -251,15 +251,11 @@ namespace amfrac
       dealii::Vector<double> new_copies(dof_layer.n_copies());
       displacement.interpolate(copies, new_copies);
 
-      // A new Newton state on the new mesh, with the run's totals.
-      const double external_work    = newton->external_work;
-      const double remeshing_energy = newton->remeshing_energy;
+      // A new Newton state on the new mesh (with the run's totals).
       setup_newton();
       if (parameters.nonlinear_solver.dissipation_control)
         setup_load_pattern(false, "dissipation or opening");
-      newton->external_work    = external_work;
-      newton->remeshing_energy = remeshing_energy;
-      newton->settling         = true;
+      newton->settling = true;
       dof_layer.gather(new_copies, newton->converged_solution);
       make_constraints(t, constraints, false);
       constraints.distribute(newton->converged_solution);
@@ -275,7 +271,6 @@ namespace amfrac
       newton->previous_residual = newton->residual;
       newton->previous_load     = newton->external_load;
       newton->converged_force   = load_force(newton->residual);
-      solver_ready              = false;
       after                     = interfaces->ledger(comm);
       newton->remeshing_energy += bulk_strain_energy(solution)
                                   + total(after, &Ledger::work) - stored_before;

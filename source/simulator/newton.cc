@@ -73,7 +73,14 @@ namespace amfrac
   Simulator<dim>::setup_newton()
   {
     TimerOutput::Scope scope(timer, "setup Newton");
-    newton = std::make_unique<NewtonState>();
+    // A new state for a new mesh or numbering keeps the run's totals.
+    const auto         fresh            = std::make_unique<NewtonState>();
+    const NewtonState &old              = newton ? *newton : *fresh;
+    const double       external_work    = old.external_work;
+    const double       remeshing_energy = old.remeshing_energy;
+    newton                              = std::make_unique<NewtonState>();
+    newton->external_work               = external_work;
+    newton->remeshing_energy            = remeshing_energy;
     make_constraints(0., newton->increment_constraints, true);
 
     const IndexSet &owned    = dof_layer.locally_owned_dofs();
