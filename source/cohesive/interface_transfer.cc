@@ -430,8 +430,22 @@ namespace amfrac
           global_gap[element.component[k]]
             += element.shape(q, k) * solution(element.dofs[k]);
         PointState &state = element.converged[q];
+        // A point in the friction phase keeps its elastic stick stretch
+        // (the law's tangential gap less the slip), not the slip itself:
+        // the slip of an old point elsewhere on the face would stretch the
+        // stick spring by the difference of the two points' tangential
+        // gaps, and that stretch would be released as motion (energy out
+        // of nothing) at every mesh change.
+        Tensor<1, dim - 1> stretch;
+        for (unsigned int i = 0; i + 1 < dim; ++i)
+          stretch[i]
+            = state.gap[i + 1] + state.offset[i + 1] - state.history.slip[i];
         // From the new gap itself: no viscous traction, no work.
-        state.gap                  = element.frame[q] * global_gap;
+        state.gap = element.frame[q] * global_gap;
+        if (state.history.debonded)
+          for (unsigned int i = 0; i + 1 < dim; ++i)
+            state.history.slip[i]
+              = state.gap[i + 1] + state.offset[i + 1] - stretch[i];
         const PointState evaluated = evaluate(state, state.gap, tangent);
         if (evaluated.history.debonded != state.history.debonded
             || evaluated.history.kappa > state.history.kappa)
@@ -461,9 +475,15 @@ namespace amfrac
         // debonded whatever its old neighbours were.
         const std::vector<PointState> seeded = element.converged;
         transfer_element(element, old, report);
+        // (A point that was debonded already keeps its friction state; a
+        // newly seeded one starts without stick stretch.)
         for (unsigned int q = 0; q < seeded.size(); ++q)
-          if (seeded[q].history.debonded)
-            element.converged[q].history = seeded[q].history;
+          if (seeded[q].history.debonded
+              && !element.converged[q].history.debonded)
+            {
+              element.converged[q].history = seeded[q].history;
+              element.converged[q].gap     = seeded[q].gap;
+            }
         rebase(element, solution, report);
         // Both faces' shape functions at the paired points: the forces on
         // the two sides cancel if the new faces match.

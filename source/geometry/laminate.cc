@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <amfrac/geometry/in_plane_refinement.h>
 #include <amfrac/geometry/laminate.h>
 #include <amfrac/parameters/expressions.h>
 #include <amfrac/parameters/input_error.h>
@@ -84,7 +85,8 @@ namespace amfrac
   void
   make_laminate_mesh(const parameters::Geometry &geometry,
                      const Laminate             &laminate,
-                     Triangulation<dim>         &triangulation)
+                     Triangulation<dim>         &triangulation,
+                     const bool                  region_along_plies)
   {
     // A 2D in-plane model meshes the laminate's (x, y) plane with one
     // (homogenized) material; otherwise the last axis is the thickness
@@ -184,6 +186,9 @@ namespace amfrac
             for (const auto &cell : triangulation.active_cell_iterators())
               if (region->value(cell->center()) != 0.)
                 cell->set_refine_flag();
+            if (dim == 3 && region_along_plies)
+              keep_refinement_in_plane(
+                triangulation, RefinementCase<dim>(RefinementCase<3>::cut_xy));
             triangulation.execute_coarsening_and_refinement();
           }
       }
@@ -328,9 +333,11 @@ namespace amfrac
   template void
   make_laminate_mesh<2>(const parameters::Geometry &,
                         const Laminate &,
-                        Triangulation<2> &);
+                        Triangulation<2> &,
+                        const bool);
   template void
   make_laminate_mesh<3>(const parameters::Geometry &,
                         const Laminate &,
-                        Triangulation<3> &);
+                        Triangulation<3> &,
+                        const bool);
 } // namespace amfrac

@@ -114,7 +114,12 @@ namespace amfrac
                         Patterns::Anything(),
                         "Cells whose centre makes this expression of x, y, "
                         "(z) nonzero are refined Region refinements times, "
-                        "after the distortion (hanging nodes), e.g. x < 2.");
+                        "after the distortion (hanging nodes), e.g. x < 2. "
+                        "In 3D scenes that adapt during their load history "
+                        "(Adaptivity/Refine every, Error threshold, Process "
+                        "zone elements) along the plies only, as that "
+                        "adaptivity refines (an expression of x and y then "
+                        "refines every ply alike).");
       prm.declare_entry("Region refinements",
                         "1",
                         Patterns::Integer(0, 5),
@@ -1486,16 +1491,17 @@ namespace amfrac
       checkpoint.parse_parameters(prm, output.directory);
       cracks.parse_parameters(prm, geometry.plies.size());
       if (adaptivity.during_history() && cohesive.interfaces.empty()
-          && (!cracks.active || adaptivity.process_zone_elements > 0))
+          && ((!cracks.active && !time.explicit_dynamics)
+              || adaptivity.process_zone_elements > 0))
         throw InputError(
           adaptivity.process_zone_elements > 0 ?
             "Adaptivity/Process zone elements" :
           adaptivity.refine_every > 0 ? "Adaptivity/Refine every" :
                                         "Adaptivity/Error threshold",
-          "refinement during a load history is for scenes with cohesive "
-          "interfaces or crack insertion (the process-zone rule for "
-          "scenes with cohesive interfaces); a linear scene adapts by "
-          "Refinement cycles");
+          "refinement during a load history is for explicit runs and for "
+          "scenes with cohesive interfaces or crack insertion (the "
+          "process-zone rule for scenes with cohesive interfaces); a "
+          "linear static scene adapts by Refinement cycles");
       if (dimension == 2 && adaptivity.process_zone_axes == 2)
         throw InputError("Adaptivity/Process zone directions",
                          "y is the thickness of a 2D laminate; the process-"
@@ -1507,14 +1513,6 @@ namespace amfrac
                          "(Refine every, Error threshold) refine along x "
                          "and y, and one of the two cannot be kept from "
                          "the process zone's cells; use xy with them");
-      if (dimension == 3 && adaptivity.during_history()
-          && !geometry.refinement_region.empty())
-        throw InputError("Geometry/Refinement region",
-                         "refines through the thickness as well, and "
-                         "refinement during the load history (Refine every, "
-                         "Error threshold, Process zone elements) in 3D "
-                         "refines along the plies only: the two cannot be "
-                         "combined; let the adaptivity refine the region");
       check_crack_input();
       if (adaptivity.active() && checkpoint.by_count_or_stop())
         throw InputError(checkpoint.every_n_steps > 0 ?
@@ -1524,12 +1522,41 @@ namespace amfrac
                          "repeat the whole run per mesh and cannot be "
                          "resumed; a run that adapts during its load "
                          "history (cohesive interfaces) can");
-      if ((adaptivity.active() || adaptivity.during_history())
-          && time.explicit_dynamics)
+      if (time.explicit_dynamics)
+        check_explicit_adaptivity_input();
+    }
+
+
+
+    void
+    Parameters::check_explicit_adaptivity_input() const
+    {
+      if (adaptivity.active())
         throw InputError("Adaptivity/Refinement cycles",
-                         "adaptive refinement of explicit runs is not "
-                         "available yet (the explicit path takes no hanging "
-                         "nodes); switch the Adaptivity subsection off");
+                         "an explicit run adapts during its history (Refine "
+                         "every, Error threshold, Process zone elements, "
+                         "checked at output steps), not by cycles of whole "
+                         "runs; set Refinement cycles = 0");
+      if (!adaptivity.during_history())
+        return;
+      const std::string why = "an explicit run that adapts its mesh (Refine "
+                              "every, Error threshold, Process zone "
+                              "elements) chooses its step on every new mesh";
+      if (time.time_step > 0)
+        throw InputError("Time/Time step",
+                         why
+                           + "; set Time step = 0 (the stable step times "
+                             "Safety factor)");
+      if (time.mass_scaling_step > 0)
+        throw InputError("Time/Mass scaling time step",
+                         why + " from the real masses; set it to 0");
+      if (cracks.active)
+        throw InputError("Crack insertion/Criterion",
+                         "crack insertion in explicit runs chooses the "
+                         "step for every crack pattern of the initial mesh, "
+                         "and cannot be combined yet with an adaptive mesh "
+                         "(Refine every, Error threshold, Process zone "
+                         "elements)");
     }
 
 
@@ -1843,16 +1870,21 @@ namespace amfrac
       prm.declare_entry("Refine every",
                         "0",
                         Patterns::Integer(0),
-                        "Scenes with cohesive interfaces: estimate, mark by "
+                        "Scenes with cohesive interfaces or crack "
+                        "insertion, and explicit runs: estimate, mark by "
                         "Strategy and refine after every this many "
-                        "converged load steps, moving the state to the new "
-                        "mesh (0: never).");
+                        "converged load steps (explicit: output steps, "
+                        "rows of history.csv), moving the state to the new "
+                        "mesh (0: never). Explicit runs then choose a new "
+                        "stable step.");
       prm.declare_entry("Error threshold",
                         "0",
                         Patterns::Double(0, 1),
-                        "Scenes with cohesive interfaces: also refine "
-                        "after a converged step whose relative ZZ error "
-                        "exceeds this (the seed's criterion; 0: off).");
+                        "Scenes with cohesive interfaces or crack "
+                        "insertion, and explicit runs: also refine after a "
+                        "converged step (explicit: an output step) whose "
+                        "relative ZZ error exceeds this (the seed's "
+                        "criterion; 0: off).");
       prm.declare_entry("Process zone elements",
                         "0",
                         Patterns::Integer(0, 100),
@@ -1866,7 +1898,8 @@ namespace amfrac
                         "(never through the thickness) and cells farther "
                         "than 3 l_cz coarsened (never below the initial "
                         "mesh). Checked after every converged step and "
-                        "before the first (0: off).");
+                        "before the first; in explicit runs after every "
+                        "output step (0: off).");
       prm.declare_entry("Process zone directions",
                         "xy",
                         Patterns::Selection("xy|x|y"),

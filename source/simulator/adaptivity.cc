@@ -174,6 +174,28 @@ namespace amfrac
 
   template <int dim>
   bool
+  Simulator<dim>::coarsenable(
+    const typename Triangulation<dim>::active_cell_iterator &cell) const
+  {
+    // Coarsening makes the parent active: allowed if the parent lies
+    // inside a cell of the initial mesh (or is one), not if it contains
+    // some (the initial mesh with its global and region refinements is
+    // the coarsest the run may go).
+    if (cell->level() == 0)
+      return false;
+    for (auto ancestor = cell->parent();; ancestor = ancestor->parent())
+      {
+        if (initial_cells.count(ancestor->id()) > 0)
+          return true;
+        if (ancestor->level() == 0)
+          return false;
+      }
+  }
+
+
+
+  template <int dim>
+  bool
   Simulator<dim>::limit_flags()
   {
     const auto &adaptivity = parameters.adaptivity;
@@ -185,9 +207,7 @@ namespace amfrac
         if (cell->refine_flag_set()
             && cell->level() >= static_cast<int>(adaptivity.max_level))
           cell->clear_refine_flag();
-        if (cell->coarsen_flag_set()
-            && cell->level()
-                 <= static_cast<int>(parameters.geometry.global_refinements))
+        if (cell->coarsen_flag_set() && !coarsenable(cell))
           cell->clear_coarsen_flag();
         any = any || cell->refine_flag_set() || cell->coarsen_flag_set();
       }

@@ -632,6 +632,10 @@ namespace amfrac
     run.put("explicit.initial_energy", state.initial_energy);
     run.put_integer("explicit.last_good_step", state.last_good_step);
     run.put("explicit.last_good_t", state.last_good_t);
+    run.put_integer("explicit.base_steps", state.base_steps);
+    run.put_integer("explicit.base_row", state.base_row);
+    run.put("explicit.base_t", state.base_t);
+    run.put("explicit.remeshing_energy", state.remeshing_energy);
     for (const auto &[name, v] : state.vectors)
       save_vector(part, name, *v);
   }
@@ -657,6 +661,15 @@ namespace amfrac
       state.initial_energy = run.get_scalar("explicit.initial_energy");
       state.last_good_step = run.get_integer("explicit.last_good_step");
       state.last_good_t    = run.get_scalar("explicit.last_good_t");
+      // Checkpoints of explicit runs before mesh changes existed lack
+      // these: no change happened.
+      if (run.has("explicit.base_steps"))
+        {
+          state.base_steps       = run.get_integer("explicit.base_steps");
+          state.base_row         = run.get_integer("explicit.base_row");
+          state.base_t           = run.get_scalar("explicit.base_t");
+          state.remeshing_energy = run.get_scalar("explicit.remeshing_energy");
+        }
       for (const auto &[name, v] : state.vectors)
         restore_vector(name, *v);
     });

@@ -9,10 +9,12 @@
 #include <amfrac/parameters/expressions.h>
 #include <amfrac/parameters/input_error.h>
 #include <amfrac/simulator/simulator.h>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <limits>
+#include <set>
 #include <sstream>
 
 namespace amfrac
@@ -21,11 +23,12 @@ namespace amfrac
   void
   Simulator<dim>::check_explicit_input() const
   {
-    if (dof_layer.hanging_node_constraints().n_constraints() > 0)
-      throw InputError("Time/Time integration",
-                       "explicit dynamics needs a mesh without hanging "
-                       "nodes (locally refined meshes are not supported "
-                       "yet)");
+    if (dof_layer.hanging_node_constraints().n_constraints() > 0
+        && parameters.time.mass_scaling_step > 0)
+      throw InputError("Time/Mass scaling time step",
+                       "mass scaling needs a mesh without hanging nodes "
+                       "(Geometry/Refinement region makes them); set it to "
+                       "0");
     if (lever.active())
       throw InputError("Boundary conditions/Lever",
                        "a lever is a static constraint; it is not "
@@ -44,29 +47,46 @@ namespace amfrac
   Simulator<dim>::element_frequency_squared(Point<dim> &where) const
   {
     // By Irons' theorem the largest element omega^2 bounds the mesh's.
-    // Each ply's smallest elements (shortest edge) are examined exactly
-    // (a dense eigenproblem of the element's M^-1 K).
-    double bulk = 0;
-    using Cell  = typename TiedCopyDoFs<dim>::CellIterator;
-    std::map<unsigned int, std::vector<std::pair<double, Cell>>> by_ply;
+    // Each ply's candidates are examined exactly (a dense eigenproblem of
+    // the element's M^-1 K): its elements with the shortest edge, the
+    // smallest volume and the smallest diameter. One measure alone misses
+    // the stiffest elements of an adapted laminate: a cell refined along
+    // the plies keeps the ply's thickness as its shortest edge, and so do
+    // its coarser neighbours.
+    double bulk   = 0;
+    using Cell    = typename TiedCopyDoFs<dim>::CellIterator;
+    using Measure = double (*)(const Cell &);
+    const Measure measures[]
+      = {[](const Cell &c) { return c->minimum_vertex_distance(); },
+         [](const Cell &c) { return c->measure(); },
+         [](const Cell &c) { return c->diameter(); }};
+    std::map<unsigned int, std::vector<Cell>> by_ply;
     for (const auto &cell : dof_layer.copy_handler().active_cell_iterators())
       if (cell->is_locally_owned())
-        by_ply[cell->material_id()].emplace_back(
-          cell->minimum_vertex_distance(), cell);
+        by_ply[cell->material_id()].push_back(cell);
     for (auto &[ply, cells] : by_ply)
       {
-        const std::size_t n = std::min<std::size_t>(4, cells.size());
-        std::partial_sort(cells.begin(),
-                          cells.begin() + n,
-                          cells.end(),
-                          [](const auto &a, const auto &b) {
-                            return a.first < b.first;
-                          });
-        for (std::size_t i = 0; i < n; ++i)
+        std::set<CellId> examined;
+        for (const Measure measure : measures)
           {
-            const double w2 = assembler.max_frequency_squared(cells[i].second);
-            if (w2 > bulk)
-              bulk = w2, where = cells[i].second->center();
+            std::vector<std::pair<double, Cell>> sorted;
+            for (const auto &cell : cells)
+              sorted.emplace_back(measure(cell), cell);
+            const std::size_t n = std::min<std::size_t>(4, sorted.size());
+            std::partial_sort(sorted.begin(),
+                              sorted.begin() + n,
+                              sorted.end(),
+                              [](const auto &a, const auto &b) {
+                                return a.first < b.first;
+                              });
+            for (std::size_t i = 0; i < n; ++i)
+              if (examined.insert(sorted[i].second->id()).second)
+                {
+                  const double w2
+                    = assembler.max_frequency_squared(sorted[i].second);
+                  if (w2 > bulk)
+                    bulk = w2, where = sorted[i].second->center();
+                }
           }
       }
     return max_and_where(bulk, where, comm) / uniform_mass_factor;
@@ -94,7 +114,8 @@ namespace amfrac
 
   template <int dim>
   double
-  Simulator<dim>::stable_time_step(const Vector &mass)
+  Simulator<dim>::stable_time_step(const Vector                   &mass,
+                                   const HangingCondensation<dim> &hanging)
   {
     Point<dim>   bulk_where, spring_where;
     const double bulk = element_frequency_squared(bulk_where);
@@ -106,8 +127,16 @@ namespace amfrac
       {
         Vector rows;
         penalty_row_sums(rows);
+        // On a mesh with hanging nodes the springs act on C^T K C: a
+        // hanging row goes to its masters, bounded with |c| times the
+        // largest sum of |c| of a line.
+        if (!hanging.empty())
+          {
+            hanging.condense(rows, true);
+            rows *= hanging.largest_weight_sum();
+          }
         for (const auto i : dof_layer.locally_owned_dofs())
-          if (rows(i) / mass(i) > springs)
+          if (mass(i) > 0 && rows(i) / mass(i) > springs)
             springs      = rows(i) / mass(i),
             spring_where = dof_layer.support_point(i);
         springs = max_and_where(springs, spring_where, comm);
@@ -316,39 +345,64 @@ namespace amfrac
       relevant_solution.reinit(owned, relevant, comm);
     };
     layout(true);
-    {
+    // Hanging nodes (a locally refined mesh): forces and masses act on
+    // the masters (C^T), the hanging entries follow them.
+    std::unique_ptr<HangingCondensation<dim>> hanging;
+    const auto                                lump_mass = [&]() {
       TimerOutput::Scope scope(timer, "lumped mass");
       assembler.lumped_mass(mass);
-    }
-    double stable;
-    {
-      TimerOutput::Scope scope(timer, "stable time step");
-      stable              = stable_time_step(mass);
-      const double target = parameters.time.mass_scaling_step;
-      if (target > 0 && parameters.time.safety_factor * stable < target)
-        {
-          scale_mass(mass, target);
-          stable = stable_time_step(mass);
-        }
-    }
-    estimated_stable_step = stable;
-    double       dt       = choose_time_step(stable);
+      hanging = std::make_unique<HangingCondensation<dim>>(dof_layer, comm);
+      hanging->condense(mass);
+    };
+    lump_mass();
     const double end      = parameters.time.end_time;
     const double interval = end / parameters.time.n_steps;
-    // Whole steps per output interval, so that output lands on its times.
-    const unsigned int substeps = std::ceil(interval / dt * (1 - 1e-12));
-    dt                          = interval / substeps;
-    pcout << "  time step " << dt << " s (" << dt / stable
-          << " of the stable step), " << substeps * parameters.time.n_steps
-          << " steps" << std::endl;
+    double       stable = 0, dt = 0;
+    unsigned int substeps = 0;
+    // The stable step of the current mesh, and the step: whole steps per
+    // output interval, so that output lands on its times.
+    const auto choose_step = [&]() {
+      {
+        TimerOutput::Scope scope(timer, "stable time step");
+        stable              = stable_time_step(mass, *hanging);
+        const double target = parameters.time.mass_scaling_step;
+        if (target > 0 && parameters.time.safety_factor * stable < target)
+          {
+            scale_mass(mass, target);
+            stable = stable_time_step(mass, *hanging);
+          }
+      }
+      estimated_stable_step = stable;
+      dt                    = choose_time_step(stable);
+      substeps              = std::ceil(interval / dt * (1 - 1e-12));
+      dt                    = interval / substeps;
+      pcout << "  time step " << dt << " s (" << dt / stable
+            << " of the stable step), " << substeps << " steps per output step"
+            << std::endl;
+    };
+    choose_step();
 
     // Free dofs move by M a = f_ext - f_int; the supports move as
     // prescribed and react with f_int - f_ext (the inertia of their own
     // nodes is the support's: it stays out of the ledger, as does their
     // kinetic energy).
     const auto split_mass = [&]() {
+      bool positive = true;
       for (const auto i : owned)
-        free_inverse_mass(i) = 1. / mass(i);
+        if (hanging->is_hanging(i))
+          free_inverse_mass(i) = 0;
+        else
+          {
+            positive             = positive && mass(i) > 0;
+            free_inverse_mass(i) = 1. / mass(i);
+          }
+      // Q2's hanging weights include -1/8: a master's condensed mass
+      // could in principle vanish.
+      if (Utilities::MPI::min(positive ? 1 : 0, comm) == 0)
+        throw CollectiveError("a lumped nodal mass is not positive on this "
+                              "mesh (hanging nodes of a Q2 mesh?); use "
+                              "Finite element degree = 1 with local "
+                              "refinement");
       support_mask = 0;
       for (const auto &support : supports)
         for (const auto i : support)
@@ -393,6 +447,7 @@ namespace amfrac
       if (beta > 0)
         {
           bulk->apply(velocity, stiffness_velocity);
+          hanging->condense(stiffness_velocity);
           damping_force.add(beta, stiffness_velocity);
         }
     };
@@ -401,12 +456,14 @@ namespace amfrac
       {
         TimerOutput::Scope scope(timer, "internal forces");
         strain_energy = bulk->apply(solution, force, true);
+        hanging->condense(force);
       }
       if (damped)
         force += damping_force;
       {
         TimerOutput::Scope scope(timer, "loads");
         assembler.assemble_load(loads, t, loaded_cells, load);
+        hanging->condense(load);
       }
       // One pass over the owned entries (all four vectors share the
       // layout): a = (f_ext - f_int) / m on free dofs, the reaction
@@ -426,10 +483,23 @@ namespace amfrac
     // The energy the run starts with (initial velocity, prescribed
     // displacement at t = 0) enters the balance beside the external work.
     double external_work = 0, initial_energy = 0;
-    auto   kinetic_energy = [&]() {
+    // What the mesh changes did to the stored and kinetic energy (moved
+    // fields, new lumped masses): beside the external work in the balance.
+    double     remeshing_energy = 0;
+    const bool adaptive         = parameters.adaptivity.during_history();
+    auto       kinetic_energy   = [&]() {
       momentum = velocity;
       momentum.scale(free_mass);
       return 0.5 * (momentum * velocity);
+    };
+    // The linear momentum of the free nodes, per component.
+    auto linear_momentum = [&]() {
+      std::array<double, dim> p{};
+      for (const auto i : owned)
+        p[dof_layer.component(i)] += free_mass(i) * velocity(i);
+      for (auto &value : p)
+        value = Utilities::MPI::sum(value, comm);
+      return p;
     };
     // The work of the interface and crack tractions (collective).
     auto interface_work = [&]() {
@@ -449,9 +519,12 @@ namespace amfrac
       const double interface_work = add_interface_columns(columns);
       if (damped)
         columns.emplace_back("damping_work", damping_work);
+      if (adaptive)
+        columns.emplace_back("remeshing_energy", remeshing_energy);
       columns.emplace_back("balance_error",
-                           initial_energy + external_work - kinetic
-                             - strain_energy - interface_work - damping_work);
+                           initial_energy + external_work + remeshing_energy
+                             - kinetic - strain_energy - interface_work
+                             - damping_work);
       return columns;
     };
 
@@ -477,7 +550,8 @@ namespace amfrac
         external_work     = state.external_work;
         damping_work      = state.damping_work;
         initial_energy    = state.initial_energy;
-        t                 = state.steps * dt;
+        remeshing_energy  = state.remeshing_energy;
+        t = state.base_t + (state.steps - state.base_steps) * dt;
       }
     else
       {
@@ -492,14 +566,23 @@ namespace amfrac
     unsigned int  last_good_step = state.last_good_step;
     double        last_good_t    = state.last_good_t;
     unsigned long n              = state.steps;
-    const auto    save = [&](CheckpointData &run, CheckpointData &part) {
-      state.steps          = n;
-      state.strain_energy  = strain_energy;
-      state.external_work  = external_work;
-      state.damping_work   = damping_work;
-      state.initial_energy = initial_energy;
-      state.last_good_step = last_good_step;
-      state.last_good_t    = last_good_t;
+    // The steps of the current size count from the last mesh change.
+    unsigned long base_steps = state.base_steps;
+    unsigned int  base_row   = state.base_row;
+    double        base_t     = state.base_t;
+    const auto    save       = [&](CheckpointData &run, CheckpointData &part) {
+      state.steps            = n;
+      state.dt               = dt;
+      state.strain_energy    = strain_energy;
+      state.external_work    = external_work;
+      state.damping_work     = damping_work;
+      state.initial_energy   = initial_energy;
+      state.last_good_step   = last_good_step;
+      state.last_good_t      = last_good_t;
+      state.base_steps       = base_steps;
+      state.base_row         = base_row;
+      state.base_t           = base_t;
+      state.remeshing_energy = remeshing_energy;
       save_explicit(state, run, part);
     };
     const unsigned long n_start = n;
@@ -516,8 +599,8 @@ namespace amfrac
       reported = now;
       const double rate
         = (n - n_start) / std::chrono::duration<double>(now - started).count();
-      pcout << "  t = " << t << " s (" << 100. * out / n_out << " %), "
-            << out * substeps << " steps, " << rate << " steps/s, about "
+      pcout << "  t = " << t << " s (" << 100. * out / n_out << " %), " << n
+            << " steps, " << rate << " steps/s, about "
             << (n_out - out) * substeps / rate << " s to go" << std::endl;
     };
     // Write the fields of the last output step and stop with @p what.
@@ -530,20 +613,104 @@ namespace amfrac
               << " s) are written";
       throw CollectiveError(message.str());
     };
-    const unsigned long n_total = static_cast<unsigned long>(substeps) * n_out;
-    while (n < n_total)
+    // What a mesh change did to the state.
+    struct MeshChange
+    {
+      bool                    by_estimate    = false;
+      double                  zz_relative    = -1;
+      double                  kinetic_before = 0, kinetic_after = 0;
+      double                  energy_before = 0, energy_after = 0;
+      std::array<double, dim> momentum_before{}, momentum_after{};
+      ExplicitTransferReport  report;
+      std::vector<typename CohesiveInterfaces<dim>::Ledger> ledger_before,
+        ledger_after;
+    };
+    // A row of adaptivity.csv and a console line per mesh change.
+    const auto log_mesh_change
+      = [&](const unsigned int row, const double t, const MeshChange &change) {
+          if (!cycle_summary)
+            cycle_summary = std::make_unique<History>(
+              parameters.output.directory + "/adaptivity.csv",
+              Utilities::MPI::this_mpi_process(comm) == 0);
+          std::vector<std::pair<std::string, double>> columns
+            = {{"step", row},
+               {"t", t},
+               {"cells", triangulation.n_global_active_cells()},
+               {"unknowns", dof_layer.n_dofs()},
+               {"by_estimate", change.by_estimate ? 1. : 0.},
+               {"zz_relative_error", change.zz_relative},
+               {"coarsened_cells", change.report.coarsened_cells},
+               {"momentum_dofs", change.report.momentum_dofs},
+               {"stable_time_step", stable},
+               {"time_step", dt},
+               {"kinetic_before", change.kinetic_before},
+               {"kinetic_after", change.kinetic_after},
+               {"energy_change", change.energy_after - change.energy_before}};
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const std::string axis(1, "xyz"[d]);
+              columns.emplace_back("momentum_" + axis + "_before",
+                                   change.momentum_before[d]);
+              columns.emplace_back("momentum_" + axis + "_after",
+                                   change.momentum_after[d]);
+            }
+          columns.emplace_back("remeshing_energy", remeshing_energy);
+          if (interfaces)
+            {
+              const auto &report = change.report.interfaces;
+              // Totals over the interfaces, as the static path logs them.
+              const auto total = [](const auto &ledger, const auto member) {
+                double sum = 0;
+                for (const auto &l : ledger)
+                  sum += l.*member;
+                return sum;
+              };
+              using Ledger       = typename CohesiveInterfaces<dim>::Ledger;
+              const auto &before = change.ledger_before;
+              const auto &after  = change.ledger_after;
+              columns.insert(
+                columns.end(),
+                {{"dissipated_before", total(before, &Ledger::dissipated)},
+                 {"dissipated_after", total(after, &Ledger::dissipated)},
+                 {"debonded_before", total(before, &Ledger::debonded)},
+                 {"debonded_after", total(after, &Ledger::debonded)},
+                 {"damaged_before", total(before, &Ledger::damaged)},
+                 {"damaged_after", total(after, &Ledger::damaged)},
+                 {"injected_points", report.injected},
+                 {"aggregated_points", report.aggregated},
+                 {"beyond_history", report.beyond_history},
+                 {"interface_force_imbalance", report.force_imbalance}});
+            }
+          cycle_summary->add_row(columns);
+          pcout << "  adapted after output step " << row << " (t=" << t
+                << " s): " << triangulation.n_global_active_cells()
+                << " cells, " << dof_layer.n_dofs() << " unknowns, "
+                << change.report.momentum_dofs
+                << " velocities from the momentum; stored and kinetic "
+                   "energy changed by "
+                << change.energy_after - change.energy_before << " N mm"
+                << std::endl;
+        };
+    // The output steps left, at the current step size.
+    const auto steps_total = [&]() {
+      return base_steps
+             + static_cast<unsigned long>(substeps) * (n_out - base_row);
+    };
+    while (n < steps_total())
       {
-        const unsigned int out = n / substeps + 1;
+        const unsigned int out = base_row + (n - base_steps) / substeps + 1;
         {
           TimerOutput::Scope scope(timer, "time steps");
           previous_load     = load;
           previous_reaction = reaction;
           previous_damping  = damping_force;
           velocity.add(0.5 * dt, acceleration);
+          hanging->distribute(velocity);
           old_solution = solution;
           solution.add(dt, velocity);
+          hanging->distribute(solution);
           ++n;
-          t = n * dt;
+          t = base_t + (n - base_steps) * dt;
           try
             {
               impose_prescribed(t, solution);
@@ -603,7 +770,7 @@ namespace amfrac
                 insert_explicit_cracks(chosen,
                                        {&solution, &velocity, &last_good});
                 layout(false);
-                assembler.lumped_mass(mass);
+                lump_mass();
                 split_mass();
                 build_operators();
                 update_damping();
@@ -627,7 +794,7 @@ namespace amfrac
           }
         // A signal stops the run after a time step; the rest of the
         // checkpoints fall on output steps.
-        const bool at_row = n % substeps == 0;
+        const bool at_row = (n - base_steps) % substeps == 0;
         if (at_row)
           {
             postprocess(out, t, reaction, ledger_row());
@@ -638,8 +805,50 @@ namespace amfrac
           }
         // Between rows a signal is looked for every 10 steps: the check
         // is a reduction over the ranks.
+        if (at_row && adaptive && out < n_out)
+          {
+            // The output step is written: a new mesh starts the next.
+            adapt_state(
+              out,
+              t,
+              solution,
+              [&](const bool by_estimate, const double zz_relative) {
+                // prepare() takes a consistent velocity.
+                hanging->distribute(velocity);
+                MeshChange change;
+                change.by_estimate    = by_estimate;
+                change.zz_relative    = zz_relative;
+                change.kinetic_before = kinetic_energy();
+                change.energy_before
+                  = change.kinetic_before + strain_energy + interface_work();
+                change.momentum_before = linear_momentum();
+                if (interfaces)
+                  change.ledger_before = interfaces->ledger(comm);
+                change.report
+                  = move_explicit_state({&solution, &last_good}, velocity);
+                layout(false);
+                lump_mass();
+                split_mass();
+                build_operators();
+                choose_step();
+                if (interfaces)
+                  interfaces->set_time_step(dt);
+                base_steps = n, base_row = out, base_t = t;
+                impose_prescribed(t, solution);
+                update_damping();
+                evaluate(t);
+                change.kinetic_after = kinetic_energy();
+                change.energy_after
+                  = change.kinetic_after + strain_energy + interface_work();
+                change.momentum_after = linear_momentum();
+                if (interfaces)
+                  change.ledger_after = interfaces->ledger(comm);
+                remeshing_energy += change.energy_after - change.energy_before;
+                log_mesh_change(out, t, change);
+              });
+          }
         if (at_row || n % 10 == 0)
-          checkpoint_after_step(out, n, at_row, n == n_total, save);
+          checkpoint_after_step(out, n, at_row, n == steps_total(), save);
       }
     timer.print_wall_time_statistics(comm);
   }

@@ -2,6 +2,7 @@
 // when to refine (every N steps, the seed's ZZ threshold, the process-zone
 // rule), and the transfer of the converged state to the new mesh (the
 // seed's tau_2 for the displacement, tau_1 for the interface history).
+#include <amfrac/geometry/in_plane_refinement.h>
 #include <amfrac/simulator/simulator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/numerics/rtree.h>
@@ -38,6 +39,19 @@ namespace amfrac
         if (axes & (1U << a))
           h = std::max(h, cell->extent_in_direction(a));
       return h;
+    }
+
+    /** deal.II's smoothing of the flags of @p triangulation; false if no
+     * flag is left. */
+    template <int dim>
+    bool
+    prepare_flags(Triangulation<dim> &triangulation)
+    {
+      triangulation.prepare_coarsening_and_refinement();
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->refine_flag_set() || cell->coarsen_flag_set())
+          return true;
+      return false;
     }
 
     template <typename Ledger, typename Member>
@@ -129,41 +143,12 @@ namespace amfrac
   void
   Simulator<dim>::keep_refinement_in_plane()
   {
-    // deal.II keeps at most one hanging level across faces and edges: when
-    // a refinement would break that, it refines the coarse neighbour as it
-    // sees fit, in 3D often isotropically, and a cell refined through the
-    // thickness next to one refined along the plies leaves faces that
-    // neither side's face contains (no side is "the coarse one" there, and
-    // the copy layer cannot tie them). So every flag becomes an in-plane
-    // cut, and every coarser cell at a vertex of a cell to be refined is
-    // refined along the plies too, before deal.II has to.
-    // In 2D deal.II's anisotropic refinement has no such faces, and the
-    // estimators keep refining through the thickness as well.
-    if (dim == 2)
-      return;
     // Parameter checks keep the estimator (both axes) and a one-axis
-    // process-zone rule apart, so one cut serves every cell.
-    const RefinementCase<dim> cut
-      = in_plane_cut<dim>(parameters.adaptivity.process_zone_axes);
-    const auto cells_at = GridTools::vertex_to_cell_map(triangulation);
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->refine_flag_set())
-        cell->set_refine_flag(cut);
-    for (bool changed = true; changed;)
-      {
-        changed = false;
-        for (const auto &cell : triangulation.active_cell_iterators())
-          if (cell->refine_flag_set())
-            for (const unsigned int v : cell->vertex_indices())
-              for (const auto &other : cells_at[cell->vertex_index(v)])
-                if (other->is_active() && other->level() < cell->level()
-                    && !other->refine_flag_set())
-                  {
-                    other->clear_coarsen_flag();
-                    other->set_refine_flag(cut);
-                    changed = true;
-                  }
-      }
+    // process-zone rule apart, so one cut serves every cell. In 2D the
+    // estimators keep refining through the thickness as well.
+    amfrac::keep_refinement_in_plane(
+      triangulation,
+      in_plane_cut<dim>(parameters.adaptivity.process_zone_axes));
   }
 
 
@@ -172,13 +157,31 @@ namespace amfrac
   void
   Simulator<dim>::adapt_during_history(const unsigned int step, const double t)
   {
+    adapt_state(step,
+                t,
+                newton->converged_solution,
+                [&](const bool by_estimate, const double zz_relative) {
+                  refine_and_transfer(step, t, by_estimate, zz_relative);
+                });
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::adapt_state(
+    const unsigned int                                   step,
+    const double                                         t,
+    const Vector                                        &state,
+    const std::function<void(const bool, const double)> &change)
+  {
     const auto &a = parameters.adaptivity;
     bool        by_estimate
       = a.refine_every > 0 && step > 0 && step % a.refine_every == 0;
     double zz_relative = -1;
     if (step > 0 && (by_estimate || a.error_threshold > 0))
       {
-        relevant_solution = newton->converged_solution;
+        relevant_solution = state;
         estimate_error(t);
         zz_relative = last_zz.relative();
         by_estimate
@@ -200,21 +203,27 @@ namespace amfrac
           mark_process_zone(!a.by_estimator());
         if (!limit_flags())
           break;
-        keep_refinement_in_plane();
-        if (!interfaces->match_flags(triangulation))
+        // SolutionTransfer needs the flags deal.II will execute: those
+        // after its smoothing (match_flags() does it with interfaces).
+        // The smoothing and the matching can add flags, isotropic ones
+        // among them: keep those in the plane too, until nothing changes.
+        bool flagged = false;
+        for (unsigned int round = 0; round < 10; ++round)
+          {
+            keep_refinement_in_plane();
+            flagged = interfaces ? interfaces->match_flags(triangulation) :
+                                   prepare_flags(triangulation);
+            if (!flagged_through_thickness(triangulation))
+              break;
+          }
+        if (!flagged)
           break;
-        for (const auto &cell : triangulation.active_cell_iterators())
-          AssertThrow(dim == 2 || !cell->refine_flag_set()
-                        || (cell->refine_flag_set() | in_plane_cut<dim>())
-                             == in_plane_cut<dim>(),
-                      ExcMessage("refinement during a load history stays "
-                                 "in the plane of the plies, but a cell "
-                                 "was flagged through the thickness"));
+        AssertThrow(!flagged_through_thickness(triangulation),
+                    ExcMessage("refinement during a load history stays "
+                               "in the plane of the plies, but a cell "
+                               "was flagged through the thickness"));
 
-        refine_and_transfer(step,
-                            t,
-                            pass == 0 && by_estimate,
-                            pass == 0 ? zz_relative : -1);
+        change(pass == 0 && by_estimate, pass == 0 ? zz_relative : -1);
         if (a.process_zone_elements == 0)
           return;
       }
@@ -305,6 +314,58 @@ namespace amfrac
           << " -> " << total(after, &Ledger::dissipated) << std::endl;
   }
 
+  template <int dim>
+  typename Simulator<dim>::ExplicitTransferReport
+  Simulator<dim>::move_explicit_state(const std::vector<Vector *> &fields,
+                                      Vector                      &velocity)
+  {
+    TimerOutput::Scope scope(timer, "refine and transfer");
+    typename CohesiveInterfaces<dim>::Snapshot snapshot;
+    if (interfaces)
+      snapshot = interfaces->snapshot(comm);
+    std::vector<double> density;
+    for (const auto &ply : plies)
+      density.push_back(ply.density);
+    ExplicitStateTransfer<dim> moving(dof_layer, density, comm);
+    moving.prepare(std::vector<const Vector *>(fields.begin(), fields.end()),
+                   velocity);
+    execute_mesh_change();
+    rebuild_after_mesh_change();
+    if (interfaces)
+      interfaces->setup(dof_layer, parameters.boundary_conditions.constants);
+    moving.interpolate(fields, velocity);
+    relevant_solution.reinit(dof_layer.locally_owned_dofs(),
+                             dof_layer.locally_relevant_dofs(),
+                             comm);
+    relevant_solution = *fields.front();
+    dof_layer.expand(relevant_solution, copy_values);
+    ExplicitTransferReport report;
+    if (interfaces)
+      report.interfaces
+        = interfaces->transfer(snapshot, relevant_solution, comm);
+    report.coarsened_cells = moving.n_coarsened_cells();
+    report.momentum_dofs   = moving.n_momentum_dofs();
+    return report;
+  }
+
+
+
+  template void
+  Simulator<2>::adapt_state(
+    const unsigned int,
+    const double,
+    const Vector &,
+    const std::function<void(const bool, const double)> &);
+  template void
+  Simulator<3>::adapt_state(
+    const unsigned int,
+    const double,
+    const Vector &,
+    const std::function<void(const bool, const double)> &);
+  template Simulator<2>::ExplicitTransferReport
+  Simulator<2>::move_explicit_state(const std::vector<Vector *> &, Vector &);
+  template Simulator<3>::ExplicitTransferReport
+  Simulator<3>::move_explicit_state(const std::vector<Vector *> &, Vector &);
   template void
   Simulator<2>::adapt_during_history(const unsigned int, const double);
   template void

@@ -29,7 +29,12 @@ namespace amfrac
     , lever(prm.boundary_conditions)
   {
     TimerOutput::Scope scope(timer, "setup");
-    make_laminate_mesh(parameters.geometry, laminate, triangulation);
+    make_laminate_mesh(parameters.geometry,
+                       laminate,
+                       triangulation,
+                       parameters.adaptivity.during_history());
+    for (const auto &cell : triangulation.active_cell_iterators())
+      initial_cells.insert(cell->id());
     if (!parameters.cohesive.interfaces.empty() || parameters.cracks.active)
       interfaces = std::make_unique<CohesiveInterfaces<dim>>(prm.cohesive);
     if (parameters.cracks.active)

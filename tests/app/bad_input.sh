@@ -366,12 +366,38 @@ end
 subsection Adaptivity
   set Refinement cycles = 2
 end"
-expect adaptivity_history_region "Geometry/Refinement region" "$base
-subsection Geometry
-  set Refinement region = x < 1
+expect explicit_adaptive_fixed_step "Time/Time step" "$base
+subsection Time
+  set Time integration = explicit
+  set Time step = 1e-9
+end
+subsection Adaptivity
+  set Refine every = 1
+end"
+expect explicit_adaptive_mass_scaling "Time/Mass scaling time step" "$base
+subsection Time
+  set Time integration = explicit
+  set Mass scaling time step = 1e-7
+end
+subsection Adaptivity
+  set Refine every = 1
+end"
+expect explicit_adaptive_cracks "Crack insertion/Criterion" "$base
+subsection Time
+  set Time integration = explicit
 end
 subsection Crack insertion
   set Criterion = hoffman
+end
+subsection Adaptivity
+  set Refine every = 1
+end"
+expect adaptivity_history_region "refines one side of cohesive interface" "$base
+subsection Geometry
+  set Refinement region = z > 0.25
+end
+subsection Cohesive interfaces
+  set Interfaces = all
 end
 subsection Adaptivity
   set Refine every = 2
@@ -397,16 +423,6 @@ subsection Adaptivity
   set Process zone elements   = 2
   set Process zone directions = x
   set Refine every            = 5
-end"
-expect adaptivity_history_explicit "Adaptivity/Refinement cycles" "$base
-subsection Cohesive interfaces
-  set Interfaces = all
-end
-subsection Time
-  set Time integration = explicit
-end
-subsection Adaptivity
-  set Refine every = 5
 end"
 
 # Total Lagrangian kinematics: what it cannot take yet, and imperfections.

@@ -56,10 +56,14 @@ namespace amfrac
                       const Laminate             &laminate,
                       Triangulation<dim>         &triangulation);
 
+  /** With @p region_along_plies (3D), the Refinement region is refined
+   * in the plane of the plies only (keep_refinement_in_plane()), as runs
+   * that adapt during their load history refine. */
   template <int dim>
   void
   make_laminate_mesh(const parameters::Geometry &geometry,
                      const Laminate             &laminate,
-                     Triangulation<dim>         &triangulation);
+                     Triangulation<dim>         &triangulation,
+                     const bool                  region_along_plies = false);
 
 } // namespace amfrac

@@ -472,6 +472,9 @@ namespace amfrac
       /** Scenes arc-length control cannot follow (InputError). */
       void
       check_arc_length_input() const;
+      /** What an explicit run's adaptivity cannot take (InputError). */
+      void
+      check_explicit_adaptivity_input() const;
       /** What crack insertion cannot be combined with yet (InputError). */
       void
       check_crack_input() const;

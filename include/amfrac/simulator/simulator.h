@@ -1,12 +1,14 @@
 #pragma once
 
 #include <amfrac/adaptivity/error_estimator.h>
+#include <amfrac/adaptivity/explicit_state_transfer.h>
 #include <amfrac/assembly/elastic_assembler.h>
 #include <amfrac/assembly/lever.h>
 #include <amfrac/assembly/loads.h>
 #include <amfrac/assembly/total_lagrangian.h>
 #include <amfrac/checkpoint/checkpoint_store.h>
 #include <amfrac/cohesive/interface_assembler.h>
+#include <amfrac/dofs/hanging_condensation.h>
 #include <amfrac/dofs/tied_copy_dofs.h>
 #include <amfrac/geometry/laminate.h>
 #include <amfrac/material/ply_table.h>
@@ -26,6 +28,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <set>
 
 namespace amfrac
 {
@@ -299,6 +302,9 @@ namespace amfrac
     typename ErrorEstimator<dim>::Estimate      last_zz;
     std::vector<std::pair<std::string, double>> last_row;
     std::unique_ptr<History>                    cycle_summary;
+    /** The active cells of the initial mesh (global and region
+     * refinements): adaptivity never coarsens below them. */
+    std::set<CellId> initial_cells;
     /** cracks.csv: one row per crack insertion event. */
     std::unique_ptr<History> crack_events;
     std::unique_ptr<History> buckling_summary;
@@ -404,8 +410,15 @@ namespace amfrac
       double        initial_energy = 0;
       /** The output step whose state a divergence writes (the vector
        * "last_good"), and its time. */
-      unsigned int                    last_good_step = 0;
-      double                          last_good_t    = 0;
+      unsigned int last_good_step = 0;
+      double       last_good_t    = 0;
+      /** The last mesh change (at an output step; none: all zero): the
+       * steps done and the output step and time it happened at, from which
+       * the steps of the current size count. */
+      unsigned long                   base_steps       = 0;
+      unsigned int                    base_row         = 0;
+      double                          base_t           = 0;
+      double                          remeshing_energy = 0;
       std::map<std::string, Vector *> vectors;
     };
     void
@@ -469,12 +482,42 @@ namespace amfrac
      * mesh; false if no flag is left. */
     bool
     limit_flags();
+    /** Whether coarsening @p cell keeps the mesh at least as fine as the
+     * initial one. */
+    bool
+    coarsenable(
+      const typename Triangulation<dim>::active_cell_iterator &cell) const;
     /** Scenes with cohesive interfaces: after converged step @p step
      * (0: before the first) at @p t, refine and coarsen if Refine every,
      * Error threshold or the process-zone rule asks for it, and move the
      * converged state to the new mesh. */
     void
     adapt_during_history(const unsigned int step, const double t);
+    /** What adapt_during_history() decides, for any path: whether Refine
+     * every, Error threshold (ZZ of @p state, the displacement) or the
+     * process-zone rule asks for a change after step @p step at @p t; if
+     * so, flags the cells and calls @p change(by_estimate, zz_relative),
+     * which must execute the flags and move the state (repeatedly for
+     * the process-zone rule, one level per call). */
+    void
+    adapt_state(const unsigned int                                   step,
+                const double                                         t,
+                const Vector                                        &state,
+                const std::function<void(const bool, const double)> &change);
+    /** What a mesh change of an explicit run did. */
+    struct ExplicitTransferReport
+    {
+      typename CohesiveInterfaces<dim>::TransferReport interfaces;
+      unsigned int                                     coarsened_cells = 0;
+      types::global_dof_index                          momentum_dofs   = 0;
+    };
+    /** Explicit runs: execute the flags and move the displacement-like
+     * @p fields (the displacement first) and the @p velocity to the new
+     * mesh (ExplicitStateTransfer: nodal interpolation, momentum kept at
+     * the nodes of coarsened cells), and the interface history (tau_1) if
+     * there are interfaces. */
+    ExplicitTransferReport
+    move_explicit_state(const std::vector<Vector *> &fields, Vector &velocity);
     /** Make every refine flag a cut along the plies and refine coarser
      * cells at the vertices of flagged cells along the plies too, so that
      * deal.II never has to refine through the thickness. */
@@ -626,7 +669,8 @@ namespace amfrac
      * against the lumped @p mass (logged with where each bound is
      * attained), shortened for Rayleigh stiffness damping. */
     double
-    stable_time_step(const Vector &mass);
+    stable_time_step(const Vector                   &mass,
+                     const HangingCondensation<dim> &hanging);
     /** The largest element omega^2 (Irons), and where. */
     double
     element_frequency_squared(Point<dim> &where) const;
