@@ -1439,6 +1439,7 @@ namespace amfrac
       Buckling::declare_parameters(prm);
       Checkpoint::declare_parameters(prm);
       CrackInsertion::declare_parameters(prm);
+      Impactor::declare_parameters(prm);
     }
 
 
@@ -1524,6 +1525,35 @@ namespace amfrac
                          "history (cohesive interfaces) can");
       if (time.explicit_dynamics)
         check_explicit_adaptivity_input();
+      impactor.parse_parameters(prm, dimension);
+      check_impactor_input();
+    }
+
+
+
+    void
+    Parameters::check_impactor_input() const
+    {
+      if (!impactor.active)
+        return;
+      const std::string face = "Impactor/Face";
+      require(time.explicit_dynamics,
+              face,
+              "the impactor moves with the explicit time integration: it "
+              "needs Time/Time integration = explicit");
+      require(!adaptivity.during_history(),
+              face,
+              "the impactor's contact nodes are those of the initial mesh; "
+              "it cannot be combined yet with a mesh that adapts (Refine "
+              "every, Error threshold, Process zone elements)");
+      require(!cracks.active,
+              face,
+              "the impactor cannot be combined yet with crack insertion "
+              "(Crack insertion/Criterion)");
+      require(time.mass_scaling_step == 0,
+              face,
+              "mass scaling (Time/Mass scaling time step) would change the "
+              "momentum the impactor exchanges; set it to 0");
     }
 
 

@@ -636,6 +636,8 @@ namespace amfrac
     run.put_integer("explicit.base_row", state.base_row);
     run.put("explicit.base_t", state.base_t);
     run.put("explicit.remeshing_energy", state.remeshing_energy);
+    for (std::size_t k = 0; k < state.impactor.size(); ++k)
+      run.put("explicit.impactor." + std::to_string(k), state.impactor[k]);
     for (const auto &[name, v] : state.vectors)
       save_vector(part, name, *v);
   }
@@ -669,6 +671,21 @@ namespace amfrac
           state.base_row         = run.get_integer("explicit.base_row");
           state.base_t           = run.get_scalar("explicit.base_t");
           state.remeshing_energy = run.get_scalar("explicit.remeshing_energy");
+        }
+      // The impactor's centre, velocity and acceleration (the parameters
+      // say whether there is one; the run's text is the checkpoint's).
+      if (parameters.impactor.active)
+        {
+          state.impactor.resize(4 * dim + 1);
+          for (std::size_t k = 0; k < state.impactor.size(); ++k)
+            {
+              const std::string key = "explicit.impactor." + std::to_string(k);
+              if (!run.has(key))
+                throw InputError("Impactor/Face",
+                                 "the checkpoint has no impactor state: it "
+                                 "was written by a run without one");
+              state.impactor[k] = run.get_scalar(key);
+            }
         }
       for (const auto &[name, v] : state.vectors)
         restore_vector(name, *v);

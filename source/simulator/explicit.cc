@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <amfrac/assembly/bulk_force.h>
 #include <amfrac/base/mpi_max.h>
+#include <amfrac/cohesive/transfer_columns.h>
 #include <amfrac/parameters/expressions.h>
 #include <amfrac/parameters/input_error.h>
 #include <amfrac/simulator/simulator.h>
@@ -108,6 +109,8 @@ namespace amfrac
     with_ghosts.compress(VectorOperation::add);
     row_sums.reinit(dof_layer.locally_owned_dofs(), comm);
     row_sums = with_ghosts;
+    if (impactor)
+      impactor->add_penalty_rows(row_sums);
   }
 
 
@@ -123,7 +126,7 @@ namespace amfrac
     // Both bounds are Rayleigh quotients in the mass inner product, so
     // omega^2 of the sum is at most the sum.
     double springs = 0;
-    if (interfaces)
+    if (interfaces || impactor)
       {
         Vector rows;
         penalty_row_sums(rows);
@@ -140,6 +143,13 @@ namespace amfrac
             springs      = rows(i) / mass(i),
             spring_where = dof_layer.support_point(i);
         springs = max_and_where(springs, spring_where, comm);
+      }
+    // The sphere's own row (its springs to every candidate node).
+    if (impactor)
+      {
+        const double sphere = impactor->frequency_squared();
+        if (sphere > springs)
+          springs = sphere, spring_where = Point<dim>();
       }
     // With crack insertion the step is chosen once for the whole run: it
     // must hold for every crack pattern the candidate faces allow.
@@ -158,12 +168,18 @@ namespace amfrac
                               "MPa, densities in t/mm^3) and the mesh");
     pcout << "  stable time step " << stable << " s: elements alone "
           << 2. / std::sqrt(bulk) << " s (at " << bulk_where << ")";
-    if (interfaces)
-      pcout << ", interface penalties"
-            << (interfaces->cracks_enabled() ? " (and any crack pattern)" : "")
+    if (interfaces || impactor)
+      pcout << ", " << (interfaces ? "interface " : "")
+            << (interfaces && impactor ? "and " : "")
+            << (impactor ? "contact " : "") << "penalties"
+            << (interfaces && interfaces->cracks_enabled() ?
+                  " (and any crack pattern)" :
+                  "")
             << " alone " << 2. / std::sqrt(springs) << " s (at " << spring_where
             << "); controlled by the "
-            << (springs > bulk ? "interfaces" : "elements");
+            << (springs <= bulk ? "elements" :
+                impactor        ? "penalties" :
+                                  "interfaces");
     pcout << std::endl;
     // Stiffness-proportional damping: central differences are stable up
     // to (2 / omega) (sqrt(1 + xi^2) - xi) at the damping ratio xi of the
@@ -232,6 +248,30 @@ namespace amfrac
           << largest << " at " << where;
     if (uniform_mass_factor > 1)
       pcout << ", all masses times " << uniform_mass_factor;
+    pcout << std::endl;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::report_contact_oscillation(const RigidImpactor<dim> &impactor,
+                                             const Vector             &mass,
+                                             const double              dt) const
+  {
+    // Stability does not make an accurate contact: a node whose contact
+    // spring swings in a few steps gains energy at every touch (its
+    // penetration is sampled too coarsely), the more the fewer.
+    const double steps
+      = 2 * M_PI / (std::sqrt(impactor.node_frequency_squared(mass)) * dt);
+    pcout << "  contact: " << steps
+          << " time steps per oscillation of the stiffest face node against "
+             "the sphere";
+    if (steps < 10)
+      pcout << "; WARNING: below 10 the contact chatter of single nodes "
+               "gains energy (watch balance_error); a lower Impactor/Penalty "
+               "helps (the count grows as 1/sqrt(Penalty) once the contact "
+               "no longer sets the time step)";
     pcout << std::endl;
   }
 
@@ -318,7 +358,7 @@ namespace amfrac
     Vector mass, velocity, acceleration, force, load, previous_load, reaction,
       previous_reaction, free_inverse_mass, support_mask, free_mass,
       damping_force, previous_damping, stiffness_velocity, displacement_step,
-      momentum, old_solution, last_good;
+      momentum, old_solution, last_good, contact;
     // The work vectors on the current numbering (velocity and last_good
     // are state: a crack insertion carries them).
     const auto layout = [&](const bool with_state) {
@@ -337,7 +377,8 @@ namespace amfrac
                         &stiffness_velocity,
                         &displacement_step,
                         &momentum,
-                        &old_solution})
+                        &old_solution,
+                        &contact})
         v->reinit(owned, comm);
       if (with_state)
         for (Vector *v : {&solution, &velocity, &last_good})
@@ -355,6 +396,12 @@ namespace amfrac
       hanging->condense(mass);
     };
     lump_mass();
+    if (parameters.impactor.active)
+      {
+        impactor
+          = std::make_unique<RigidImpactor<dim>>(parameters.impactor, comm);
+        impactor->setup(dof_layer);
+      }
     const double end      = parameters.time.end_time;
     const double interval = end / parameters.time.n_steps;
     double       stable = 0, dt = 0;
@@ -381,6 +428,8 @@ namespace amfrac
             << std::endl;
     };
     choose_step();
+    if (impactor)
+      report_contact_oscillation(*impactor, mass, dt);
 
     // Free dofs move by M a = f_ext - f_int; the supports move as
     // prescribed and react with f_int - f_ext (the inertia of their own
@@ -465,18 +514,28 @@ namespace amfrac
         assembler.assemble_load(loads, t, loaded_cells, load);
         hanging->condense(load);
       }
+      // The impactor's forces stay out of `load`: their work is the
+      // exchange with the sphere, not external work.
+      if (impactor)
+        {
+          TimerOutput::Scope scope(timer, "contact");
+          impactor->evaluate(solution, contact);
+          hanging->condense(contact);
+        }
       // One pass over the owned entries (all four vectors share the
       // layout): a = (f_ext - f_int) / m on free dofs, the reaction
       // f_int - f_ext on the supports.
       const double *f_int = force.begin(), *f_ext = load.begin(),
                    *inverse_mass = free_inverse_mass.begin(),
-                   *support      = support_mask.begin();
+                   *support      = support_mask.begin(),
+                   *f_contact    = impactor ? contact.begin() : nullptr;
       double *a = acceleration.begin(), *r = reaction.begin();
       for (std::size_t i = 0; i < force.locally_owned_size(); ++i)
         {
-          const double residual = f_int[i] - f_ext[i];
-          a[i]                  = -residual * inverse_mass[i];
-          r[i]                  = residual * support[i];
+          const double residual
+            = f_int[i] - f_ext[i] - (f_contact ? f_contact[i] : 0.);
+          a[i] = -residual * inverse_mass[i];
+          r[i] = residual * support[i];
         }
     };
 
@@ -509,7 +568,7 @@ namespace amfrac
           work += l.work;
       return work;
     };
-    auto ledger_row = [&]() {
+    auto ledger_row = [&](const double t_row) {
       relevant_solution                                   = solution;
       const double                                kinetic = kinetic_energy();
       std::vector<std::pair<std::string, double>> columns
@@ -521,10 +580,25 @@ namespace amfrac
         columns.emplace_back("damping_work", damping_work);
       if (adaptive)
         columns.emplace_back("remeshing_energy", remeshing_energy);
+      double impactor_energy = 0;
+      if (impactor)
+        {
+          impactor_energy
+            = impactor->kinetic_energy() + impactor->contact_energy();
+          columns.emplace_back("impactor_kinetic", impactor->kinetic_energy());
+          columns.emplace_back("contact_energy", impactor->contact_energy());
+          // Laminate and sphere together along the face normal.
+          const unsigned int axis = parameters.impactor.boundary_id / 2;
+          columns.emplace_back("momentum",
+                               linear_momentum()[axis]
+                                 + impactor->momentum()[axis]);
+          const auto more = impactor->columns(t_row);
+          columns.insert(columns.end(), more.begin(), more.end());
+        }
       columns.emplace_back("balance_error",
                            initial_energy + external_work + remeshing_energy
                              - kinetic - strain_energy - interface_work
-                             - damping_work);
+                             - damping_work - impactor_energy);
       return columns;
     };
 
@@ -552,6 +626,8 @@ namespace amfrac
         initial_energy    = state.initial_energy;
         remeshing_energy  = state.remeshing_energy;
         t = state.base_t + (state.steps - state.base_steps) * dt;
+        if (impactor)
+          impactor->set_state(state.impactor);
       }
     else
       {
@@ -560,7 +636,16 @@ namespace amfrac
         update_damping();
         evaluate(t);
         initial_energy = strain_energy + kinetic_energy();
-        postprocess(0, t, reaction, ledger_row());
+        if (impactor)
+          {
+            if (impactor->penetration_depth() > 0)
+              throw InputError("Impactor/Center",
+                               "the sphere overlaps the laminate at t = 0 (by "
+                                 + std::to_string(impactor->penetration_depth())
+                                 + " mm); start it clear of the face");
+            initial_energy += impactor->kinetic_energy();
+          }
+        postprocess(0, t, reaction, ledger_row(t));
         last_good = solution;
       }
     unsigned int  last_good_step = state.last_good_step;
@@ -583,6 +668,8 @@ namespace amfrac
       state.base_row         = base_row;
       state.base_t           = base_t;
       state.remeshing_energy = remeshing_energy;
+      if (impactor)
+        state.impactor = impactor->state();
       save_explicit(state, run, part);
     };
     const unsigned long n_start = n;
@@ -657,29 +744,11 @@ namespace amfrac
           columns.emplace_back("remeshing_energy", remeshing_energy);
           if (interfaces)
             {
-              const auto &report = change.report.interfaces;
-              // Totals over the interfaces, as the static path logs them.
-              const auto total = [](const auto &ledger, const auto member) {
-                double sum = 0;
-                for (const auto &l : ledger)
-                  sum += l.*member;
-                return sum;
-              };
-              using Ledger       = typename CohesiveInterfaces<dim>::Ledger;
-              const auto &before = change.ledger_before;
-              const auto &after  = change.ledger_after;
-              columns.insert(
-                columns.end(),
-                {{"dissipated_before", total(before, &Ledger::dissipated)},
-                 {"dissipated_after", total(after, &Ledger::dissipated)},
-                 {"debonded_before", total(before, &Ledger::debonded)},
-                 {"debonded_after", total(after, &Ledger::debonded)},
-                 {"damaged_before", total(before, &Ledger::damaged)},
-                 {"damaged_after", total(after, &Ledger::damaged)},
-                 {"injected_points", report.injected},
-                 {"aggregated_points", report.aggregated},
-                 {"beyond_history", report.beyond_history},
-                 {"interface_force_imbalance", report.force_imbalance}});
+              const auto transfer
+                = interface_transfer_columns(change.ledger_before,
+                                             change.ledger_after,
+                                             change.report.interfaces);
+              columns.insert(columns.end(), transfer.begin(), transfer.end());
             }
           cycle_summary->add_row(columns);
           pcout << "  adapted after output step " << row << " (t=" << t
@@ -709,6 +778,11 @@ namespace amfrac
           old_solution = solution;
           solution.add(dt, velocity);
           hanging->distribute(solution);
+          if (impactor)
+            {
+              impactor->kick(0.5 * dt);
+              impactor->drift(dt);
+            }
           ++n;
           t = base_t + (n - base_steps) * dt;
           try
@@ -722,6 +796,8 @@ namespace amfrac
               stop_with_last_good(e.what());
             }
           velocity.add(0.5 * dt, acceleration);
+          if (impactor)
+            impactor->kick(0.5 * dt);
           displacement_step = solution;
           displacement_step -= old_solution;
           previous_load += load;
@@ -797,7 +873,7 @@ namespace amfrac
         const bool at_row = (n - base_steps) % substeps == 0;
         if (at_row)
           {
-            postprocess(out, t, reaction, ledger_row());
+            postprocess(out, t, reaction, ledger_row(t));
             report_progress(out, t);
             last_good      = solution;
             last_good_step = out;

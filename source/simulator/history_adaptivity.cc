@@ -2,6 +2,7 @@
 // when to refine (every N steps, the seed's ZZ threshold, the process-zone
 // rule), and the transfer of the converged state to the new mesh (the
 // seed's tau_2 for the displacement, tau_1 for the interface history).
+#include <amfrac/cohesive/transfer_columns.h>
 #include <amfrac/geometry/in_plane_refinement.h>
 #include <amfrac/simulator/simulator.h>
 #include <deal.II/grid/grid_tools.h>
@@ -52,16 +53,6 @@ namespace amfrac
         if (cell->refine_flag_set() || cell->coarsen_flag_set())
           return true;
       return false;
-    }
-
-    template <typename Ledger, typename Member>
-    double
-    total(const std::vector<Ledger> &ledger, const Member member)
-    {
-      double sum = 0;
-      for (const Ledger &l : ledger)
-        sum += l.*member;
-      return sum;
     }
   } // namespace
 
@@ -288,24 +279,17 @@ namespace amfrac
       cycle_summary = std::make_unique<History>(
         parameters.output.directory + "/adaptivity.csv",
         Utilities::MPI::this_mpi_process(comm) == 0);
-    cycle_summary->add_row(
-      {{"step", step},
-       {"t", t},
-       {"cells", triangulation.n_global_active_cells()},
-       {"unknowns", dof_layer.n_dofs()},
-       {"by_estimate", by_estimate ? 1. : 0.},
-       {"zz_relative_error", zz_relative},
-       {"dissipated_before", total(before, &Ledger::dissipated)},
-       {"dissipated_after", total(after, &Ledger::dissipated)},
-       {"debonded_before", total(before, &Ledger::debonded)},
-       {"debonded_after", total(after, &Ledger::debonded)},
-       {"damaged_before", total(before, &Ledger::damaged)},
-       {"damaged_after", total(after, &Ledger::damaged)},
-       {"injected_points", report.injected},
-       {"aggregated_points", report.aggregated},
-       {"beyond_history", report.beyond_history},
-       {"interface_force_imbalance", report.force_imbalance},
-       {"remeshing_energy", newton->remeshing_energy}});
+    std::vector<std::pair<std::string, double>> columns{
+      {"step", step},
+      {"t", t},
+      {"cells", triangulation.n_global_active_cells()},
+      {"unknowns", dof_layer.n_dofs()},
+      {"by_estimate", by_estimate ? 1. : 0.},
+      {"zz_relative_error", zz_relative}};
+    const auto transfer = interface_transfer_columns(before, after, report);
+    columns.insert(columns.end(), transfer.begin(), transfer.end());
+    columns.emplace_back("remeshing_energy", newton->remeshing_energy);
+    cycle_summary->add_row(columns);
     pcout << "  adapted after step " << step << ": "
           << triangulation.n_global_active_cells() << " cells, "
           << dof_layer.n_dofs() << " unknowns; interface history of "

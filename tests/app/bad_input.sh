@@ -392,6 +392,48 @@ end
 subsection Adaptivity
   set Refine every = 1
 end"
+impactor='subsection Impactor
+  set Face = z+
+  set Center = 0.5, 0.5, 8
+end'
+explicit='subsection Time
+  set Time integration = explicit
+end'
+expect impactor_static "Impactor/Face" "$base
+$impactor"
+expect impactor_2d "Impactor/Face" "$(with 'set Dimension = 3' 'set Dimension = 2')
+$impactor
+$explicit"
+expect impactor_mass "Impactor/Mass" "$base
+$impactor
+$explicit
+subsection Impactor
+  set Mass = 0
+end"
+expect impactor_overlap "Impactor/Center" "$base
+$impactor
+$explicit
+subsection Impactor
+  set Center = 0.5, 0.5, 5
+end"
+expect impactor_adaptive "Impactor/Face" "$base
+$impactor
+$explicit
+subsection Adaptivity
+  set Refine every = 1
+end"
+expect impactor_cracks "Impactor/Face" "$base
+$impactor
+$explicit
+subsection Crack insertion
+  set Criterion = hoffman
+end"
+expect impactor_center "Center" "$base
+$impactor
+$explicit
+subsection Impactor
+  set Center = 0, 0
+end"
 expect adaptivity_history_region "refines one side of cohesive interface" "$base
 subsection Geometry
   set Refinement region = z > 0.25

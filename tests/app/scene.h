@@ -5,9 +5,11 @@
 
 #include "../check.h"
 
+#include <algorithm>
 #include <amfrac/parameters/parameters.h>
 #include <amfrac/postprocess/history.h>
 #include <amfrac/simulator/simulator.h>
+#include <cmath>
 #include <deal.II/base/mpi.h>
 #include <fstream>
 #include <memory>
@@ -51,5 +53,14 @@ namespace amfrac_test
     CHECK(value("debonded_after") >= value("debonded_before") - 1e-12);
     CHECK(value("damaged_after") >= value("damaged_before") - 1e-12);
     CHECK(value("interface_force_imbalance") < 1e-10);
+  }
+  /** The largest magnitude of a column of a history. */
+  inline double
+  largest(const amfrac::History &h, const std::string &column)
+  {
+    double value = 0;
+    for (std::size_t r = 0; r < h.n_rows(); ++r)
+      value = std::max(value, std::abs(h.value(r, column)));
+    return value;
   }
 } // namespace amfrac_test

@@ -1,6 +1,8 @@
 #pragma once
 
+#include <amfrac/base/ordered_sums.h>
 #include <amfrac/dofs/tied_copy_dofs.h>
+#include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <vector>
 
@@ -59,18 +61,40 @@ namespace amfrac
     }
 
   private:
-    MPI_Comm                             comm;
-    IndexSet                             owned;
+    /** A master of a hanging entry: its weight, and where its value is:
+     * an owned entry (local index of the reduced vector) or a ghost of
+     * the exchange vector (local index there). */
+    struct Master
+    {
+      bool                    owned;
+      types::global_dof_index index;
+      double                  weight;
+    };
+
+    MPI_Comm comm;
+    IndexSet owned;
+    /** Owned hanging entries, global (sorted) and local indices. */
     std::vector<types::global_dof_index> hanging;
-    /** Masters and weights of hanging[k] in [offsets[k], offsets[k+1]). */
-    std::vector<std::size_t>             offsets;
-    std::vector<types::global_dof_index> masters;
-    std::vector<double>                  weights;
-    double                               weight_sum       = 1;
-    unsigned long                        n_global_hanging = 0;
-    /** Owned entries and the masters of owned hanging entries. */
-    mutable Vector ghosted;
-    /** The same entries, writable, for the sums of condense(). */
-    mutable Vector sums;
+    std::vector<types::global_dof_index> hanging_local;
+    /** Masters of hanging[k] in [offsets[k], offsets[k+1]). */
+    std::vector<std::size_t> offsets;
+    std::vector<Master>      masters;
+    double                   weight_sum       = 1;
+    unsigned long            n_global_hanging = 0;
+    /** The contributions of condense(), one slot per (hanging entry,
+     * master), added to each master in the order of the hanging entries'
+     * positions: the same sums on any number of ranks (explicit runs
+     * amplify round-off that depends on the partition). */
+    mutable OrderedSums sums;
+    /** Whether any rank has a master owned by another rank: only then
+     * does distribute() communicate. */
+    bool any_remote = false;
+    /** Owned entries plus the other ranks' masters as ghosts: the
+     * masters' values come to distribute() through update_ghost_values();
+     * only the entries involved are touched. */
+    mutable LinearAlgebra::distributed::Vector<double> exchange;
+    /** Local indices of the owned entries other ranks read (the
+     * partitioner's import indices). */
+    std::vector<types::global_dof_index> shared;
   };
 } // namespace amfrac

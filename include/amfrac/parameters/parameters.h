@@ -3,6 +3,7 @@
 #include <amfrac/geometry/stacking_sequence.h>
 #include <amfrac/material/orthotropic.h>
 #include <amfrac/parameters/crack_insertion.h>
+#include <amfrac/parameters/impactor.h>
 #include <array>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
@@ -443,6 +444,7 @@ namespace amfrac
       Buckling           buckling;
       Checkpoint         checkpoint;
       CrackInsertion     cracks;
+      Impactor           impactor;
       /** Every parameter with its value (ShortPRM), as read: the text a
        * checkpoint stores so that a restart can rebuild the run. */
       std::string text;
@@ -463,6 +465,9 @@ namespace amfrac
       from_string(const std::string &text);
 
     private:
+      /** Inputs an impactor cannot take (InputError). */
+      void
+      check_impactor_input() const;
       /** Inputs a linear buckling analysis cannot take (InputError). */
       void
       check_buckling_input() const;

@@ -8,6 +8,7 @@
 #include <amfrac/assembly/total_lagrangian.h>
 #include <amfrac/checkpoint/checkpoint_store.h>
 #include <amfrac/cohesive/interface_assembler.h>
+#include <amfrac/contact/rigid_impactor.h>
 #include <amfrac/dofs/hanging_condensation.h>
 #include <amfrac/dofs/tied_copy_dofs.h>
 #include <amfrac/geometry/laminate.h>
@@ -204,6 +205,8 @@ namespace amfrac
     std::unique_ptr<FieldOutput<dim>>        field_output;
     std::unique_ptr<InterfaceOutput<dim>>    interface_output;
     std::unique_ptr<CohesiveInterfaces<dim>> interfaces;
+    /** Explicit runs with an Impactor subsection (nullptr otherwise). */
+    std::unique_ptr<RigidImpactor<dim>> impactor;
     /** Crack insertion: where faces may crack (nullptr without crack
      * insertion), and the strength factor of every face (face f of active
      * cell c at c * faces_per_cell + f), evaluated once in a fixed order
@@ -415,10 +418,12 @@ namespace amfrac
       /** The last mesh change (at an output step; none: all zero): the
        * steps done and the output step and time it happened at, from which
        * the steps of the current size count. */
-      unsigned long                   base_steps       = 0;
-      unsigned int                    base_row         = 0;
-      double                          base_t           = 0;
-      double                          remeshing_energy = 0;
+      unsigned long base_steps       = 0;
+      unsigned int  base_row         = 0;
+      double        base_t           = 0;
+      double        remeshing_energy = 0;
+      /** RigidImpactor::state() (empty without an impactor). */
+      std::vector<double>             impactor;
       std::map<std::string, Vector *> vectors;
     };
     void
@@ -665,8 +670,8 @@ namespace amfrac
     /** Inputs an explicit run cannot take (throws InputError). */
     void
     check_explicit_input() const;
-    /** 2 / omega_max from the elements and the interface penalties
-     * against the lumped @p mass (logged with where each bound is
+    /** 2 / omega_max from the elements and the interface and contact
+     * penalties against the lumped @p mass (logged with where each bound is
      * attained), shortened for Rayleigh stiffness damping. */
     double
     stable_time_step(const Vector                   &mass,
@@ -674,7 +679,14 @@ namespace amfrac
     /** The largest element omega^2 (Irons), and where. */
     double
     element_frequency_squared(Point<dim> &where) const;
-    /** Gershgorin row sums of the interface penalty springs per dof. */
+    /** Logs how many time steps @p dt one oscillation of the stiffest
+     * contact spring takes, with a warning below 10. */
+    void
+    report_contact_oscillation(const RigidImpactor<dim> &impactor,
+                               const Vector             &mass,
+                               const double              dt) const;
+    /** Gershgorin row sums of the interface and contact penalty springs
+     * per dof. */
     void
     penalty_row_sums(Vector &row_sums) const;
     /** Mass scaling: add nodal mass so that @p target is Safety factor

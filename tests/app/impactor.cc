@@ -1,0 +1,169 @@
+// The rigid impactor (issue 10, first step) on prm/impact_plate_sphere.prm
+// (a quarter model, a steel sphere of 5 mm radius at 10 m/s):
+// - wall: every node of a 10 x 10 mm plate held, 1 mm cells: only the
+//   corner node under the sphere's path touches it, a single spring of
+//   k = Penalty * h^2 / 4, so the contact is a harmonic oscillator:
+//   largest penetration v sqrt(m / k) and force v sqrt(m k) within 1 %,
+//   contact for pi sqrt(m / k) within 2 %, rebound at the impact speed
+//   within 1 % (elastic), energy balance within 1 % of the sphere's energy;
+// - free: the same plate free to move along z (only the symmetry planes
+//   held): the momentum of plate and sphere together stays that of t = 0
+//   to 1e-9, the balance closes to 1 % of the initial energy, and the
+//   sphere slows while the plate takes its momentum;
+// - scene: tests/app/impactor_coarse.prm (20 x 20 cells, 20 us) on the
+//   clamped plate with its two cohesive interfaces: the balance within 2 %
+//   of the sphere's energy, contact, the sphere slowed.
+// usage: app_impactor wall|free|scene SCENE.prm COARSE.prm WORKDIR
+#include "../check.h"
+#include "scene.h"
+
+#include <amfrac/simulator/simulator.h>
+#include <cmath>
+#include <deal.II/base/mpi.h>
+#include <fstream>
+#include <sstream>
+
+using namespace amfrac;
+
+namespace
+{
+  const double mass = 1.0275e-6, speed = 1e4, penalty = 5e5;
+
+  using amfrac_test::largest;
+
+  /** A 10 x 10 mm plate of 1 mm cells without interfaces, for @p end s in
+   * @p rows output steps, history only, in @p workdir. */
+  std::string
+  small_plate(const double       end,
+              const unsigned int rows,
+              const std::string &workdir)
+  {
+    std::ostringstream text;
+    text << "subsection Geometry\n  set Length = 10\n  set Width = 10\n"
+         << "  set Elements along length = 10\n"
+         << "  set Elements along width = 10\nend\n"
+         << "subsection Cohesive interfaces\n  set Interfaces =\nend\n"
+         << "subsection Time\n  set End time = " << end
+         << "\n  set Number of steps = " << rows << "\nend\n"
+         << "subsection Output\n  set Directory = " << workdir
+         << "\n  set Field format = none\nend\n";
+    return text.str();
+  }
+
+  void
+  wall(const std::string &prm, const std::string &workdir)
+  {
+    std::string held;
+    for (const char *face : {"x-", "x+", "y-", "y+", "z-", "z+"})
+      held += std::string("subsection Boundary conditions\n  subsection ")
+              + face
+              + "\n    set Type = displacement\n    set Components = "
+                "x, y, z\n  end\nend\n";
+    const auto simulator
+      = amfrac_test::run_scene<3>(prm,
+                                  small_plate(1.2e-5, 300, workdir) + held);
+    const History &h     = simulator->history();
+    const double   k     = penalty * 0.25; // the corner node's quarter cell
+    const double   depth = speed * std::sqrt(mass / k);
+    const double   force = speed * std::sqrt(mass * k);
+    const double   lasts = M_PI * std::sqrt(mass / k);
+    const double   start = 0.001 / speed; // the initial gap
+    double         last_contact = 0, energy = 0;
+    for (std::size_t r = 0; r < h.n_rows(); ++r)
+      {
+        CHECK(h.value(r, "contact_nodes") <= 1);
+        if (h.value(r, "contact_nodes") > 0)
+          last_contact = h.value(r, "time");
+        energy = std::max(energy, std::abs(h.value(r, "balance_error")));
+      }
+    const std::size_t last = h.n_rows() - 1;
+    std::cout << "penetration " << largest(h, "penetration") << " (" << depth
+              << "), force " << largest(h, "contact_force") << " (" << force
+              << "), contact until " << last_contact << " s (" << start + lasts
+              << "), rebound " << h.value(last, "impactor_velocity")
+              << " mm/s, balance " << energy / (0.5 * mass * speed * speed)
+              << std::endl;
+    CHECK_CLOSE(largest(h, "penetration"), depth, 0.01 * depth);
+    CHECK_CLOSE(largest(h, "contact_force"), force, 0.01 * force);
+    CHECK_CLOSE(last_contact, start + lasts, 0.02 * lasts);
+    CHECK_CLOSE(h.value(last, "impactor_velocity"), speed, 0.01 * speed);
+    CHECK(energy < 0.01 * 0.5 * mass * speed * speed);
+  }
+
+  void
+  free_plate(const std::string &prm, const std::string &workdir)
+  {
+    std::string free;
+    for (const char *face : {"x+", "y+"})
+      free += std::string("subsection Boundary conditions\n  subsection ")
+              + face + "\n    set Type = free\n  end\nend\n";
+    const auto simulator
+      = amfrac_test::run_scene<3>(prm, small_plate(1e-5, 50, workdir) + free);
+    const History    &h       = simulator->history();
+    const double      initial = -mass * speed;
+    const double      energy0 = 0.5 * mass * speed * speed;
+    double            drift = 0, balance = 0;
+    const std::size_t last = h.n_rows() - 1;
+    for (std::size_t r = 0; r < h.n_rows(); ++r)
+      {
+        drift   = std::max(drift, std::abs(h.value(r, "momentum") - initial));
+        balance = std::max(balance, std::abs(h.value(r, "balance_error")));
+      }
+    std::cout << "momentum drift " << drift / std::abs(initial) << ", balance "
+              << balance / energy0 << ", sphere at "
+              << h.value(last, "impactor_velocity") << " mm/s, contact force "
+              << largest(h, "contact_force") << " N" << std::endl;
+    CHECK(drift < 1e-9 * std::abs(initial));
+    CHECK(balance < 0.01 * energy0);
+    CHECK(h.value(last, "impactor_velocity") > -0.99 * speed);
+    CHECK(largest(h, "contact_force") > 0);
+  }
+
+  void
+  scene(const std::string &prm,
+        const std::string &coarse,
+        const std::string &workdir)
+  {
+    std::ifstream     in(coarse);
+    std::stringstream text;
+    text << in.rdbuf() << "\nsubsection Output\n  set Directory = " << workdir
+         << "\nend\n";
+    const auto        simulator = amfrac_test::run_scene<3>(prm, text.str());
+    const History    &h         = simulator->history();
+    const double      energy0   = 0.5 * mass * speed * speed;
+    const std::size_t last      = h.n_rows() - 1;
+    std::cout << "balance " << largest(h, "balance_error") / energy0
+              << " of the sphere's energy, contact force "
+              << largest(h, "contact_force") << " N, sphere at "
+              << h.value(last, "impactor_velocity") << " mm/s, plate strain "
+              << h.value(last, "strain_energy") << " N mm" << std::endl;
+    CHECK(largest(h, "balance_error") < 0.02 * energy0);
+    CHECK(largest(h, "contact_force") > 0);
+    CHECK(h.value(last, "impactor_velocity") > -0.99 * speed);
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  try
+    {
+      AssertThrow(argc == 5,
+                  ExcMessage("usage: app_impactor wall|free|scene "
+                             "SCENE.prm COARSE.prm WORKDIR"));
+      const std::string which = argv[1];
+      if (which == "wall")
+        wall(argv[2], argv[4]);
+      else if (which == "free")
+        free_plate(argv[2], argv[4]);
+      else
+        scene(argv[2], argv[3], argv[4]);
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << e.what() << std::endl;
+      return 1;
+    }
+  return amfrac_test::failures;
+}
