@@ -60,6 +60,8 @@ namespace amfrac
                      face_values.quadrature_point_indices())
                   area += face_values.shape_value_component(i, q, 0)
                           * face_values.JxW(q);
+                // operator[] value-initializes: stiffness 0 on the first
+                // visit.
                 Node &node = found[indices[i]];
                 if (node.stiffness == 0)
                   {
@@ -88,10 +90,11 @@ namespace amfrac
   RigidImpactor<dim>::evaluate(const Vector &u, Vector &contact)
   {
     contact = 0;
-    // This rank's contributions in the order of its nodes: the force on
-    // the sphere (dim values) and the energy, per node in contact.
-    std::vector<double> shares;
-    double              deepest = 0;
+    // This rank's contributions per node in contact: its position (the
+    // key of the sum), the force on the sphere and the energy.
+    constexpr unsigned int stride = 2 * dim + 1;
+    std::vector<double>    shares;
+    double                 deepest = 0;
     for (const Node &node : nodes)
       {
         Tensor<1, dim> d;
@@ -103,6 +106,8 @@ namespace amfrac
           continue;
         const Tensor<1, dim> on_node = (-node.stiffness * gap / distance) * d;
         for (unsigned int c = 0; c < dim; ++c)
+          shares.push_back(node.position[c]);
+        for (unsigned int c = 0; c < dim; ++c)
           {
             contact(node.dofs[c]) = on_node[c];
             shares.push_back(-on_node[c]);
@@ -111,8 +116,9 @@ namespace amfrac
         deepest = std::max(deepest, -gap);
       }
     contact.compress(VectorOperation::insert);
-    // Every rank adds all shares in the order of the ranks (whose owned
-    // blocks follow each other) and of their nodes.
+    // Every rank gathers all shares and adds them in the order of the
+    // nodes' positions: the numbering of the nodes depends on the
+    // partition, their positions do not.
     if (Utilities::MPI::n_mpi_processes(comm) > 1)
       {
         const int        mine  = shares.size();
@@ -131,15 +137,24 @@ namespace amfrac
         shares.swap(all);
         deepest = Utilities::MPI::max(deepest, comm);
       }
+    std::vector<std::size_t> order(shares.size() / stride);
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](const auto a, const auto b) {
+      return std::lexicographical_compare(shares.begin() + a * stride,
+                                          shares.begin() + a * stride + dim,
+                                          shares.begin() + b * stride,
+                                          shares.begin() + b * stride + dim);
+    });
     force  = Tensor<1, dim>();
     energy = 0;
-    for (std::size_t s = 0; s < shares.size(); s += dim + 1)
+    for (const std::size_t k : order)
       {
+        const double *share = shares.data() + k * stride + dim;
         for (unsigned int c = 0; c < dim; ++c)
-          force[c] += shares[s + c];
-        energy += shares[s + dim];
+          force[c] += share[c];
+        energy += share[dim];
       }
-    n_contact    = shares.size() / (dim + 1);
+    n_contact    = order.size();
     penetration  = deepest;
     acceleration = force / mass;
   }

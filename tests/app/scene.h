@@ -54,13 +54,19 @@ namespace amfrac_test
     CHECK(value("damaged_after") >= value("damaged_before") - 1e-12);
     CHECK(value("interface_force_imbalance") < 1e-10);
   }
-  /** The largest magnitude of a column of a history. */
+  /** The largest magnitude of a column of a history; NaN if any value is
+   * not a number (so that a check "largest < tolerance" fails). */
   inline double
   largest(const amfrac::History &h, const std::string &column)
   {
     double value = 0;
     for (std::size_t r = 0; r < h.n_rows(); ++r)
-      value = std::max(value, std::abs(h.value(r, column)));
+      {
+        const double x = h.value(r, column);
+        if (std::isnan(x))
+          return x;
+        value = std::max(value, std::abs(x));
+      }
     return value;
   }
 } // namespace amfrac_test

@@ -24,8 +24,9 @@ namespace amfrac
    * The sphere moves with the laminate's central differences: kick() by
    * half a step with the acceleration of the last evaluate(), drift() by a
    * whole step. Each rank evaluates the nodes it owns; the force on the
-   * sphere adds every node's share in the order of the nodes, on any
-   * number of ranks (the same sum bit for bit).
+   * sphere adds every node's share in the order of the nodes' positions,
+   * on any number of ranks (the same sum bit for bit; the numbering of the
+   * nodes depends on the partition).
    */
   template <int dim>
   class RigidImpactor
