@@ -515,27 +515,27 @@ namespace amfrac
         hanging->condense(load);
       }
       // The impactor's forces stay out of `load`: their work is the
-      // exchange with the sphere, not external work.
+      // exchange with the sphere, not external work. They join the
+      // internal force as damping does (once per step, not per entry).
       if (impactor)
         {
           TimerOutput::Scope scope(timer, "contact");
           impactor->evaluate(solution, contact);
           hanging->condense(contact);
+          force -= contact;
         }
       // One pass over the owned entries (all four vectors share the
       // layout): a = (f_ext - f_int) / m on free dofs, the reaction
       // f_int - f_ext on the supports.
       const double *f_int = force.begin(), *f_ext = load.begin(),
                    *inverse_mass = free_inverse_mass.begin(),
-                   *support      = support_mask.begin(),
-                   *f_contact    = impactor ? contact.begin() : nullptr;
+                   *support      = support_mask.begin();
       double *a = acceleration.begin(), *r = reaction.begin();
       for (std::size_t i = 0; i < force.locally_owned_size(); ++i)
         {
-          const double residual
-            = f_int[i] - f_ext[i] - (f_contact ? f_contact[i] : 0.);
-          a[i] = -residual * inverse_mass[i];
-          r[i] = residual * support[i];
+          const double residual = f_int[i] - f_ext[i];
+          a[i]                  = -residual * inverse_mass[i];
+          r[i]                  = residual * support[i];
         }
     };
 
