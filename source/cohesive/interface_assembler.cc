@@ -816,7 +816,10 @@ namespace amfrac
     const std::function<void(const CellIterator &, dealii::Vector<double> &)>
                                                                   &element_mass,
     const std::function<bool(const CellIterator &, unsigned int)> &may_crack,
-    Point<dim>                                                    &where) const
+    Point<dim>                                                    &where,
+    const double contact_penalty,
+    const std::function<bool(const CellIterator &, unsigned int)> &in_contact)
+    const
   {
     const auto               &fe      = dofs.get_fe();
     const unsigned int        n       = fe.n_dofs_per_cell();
@@ -844,6 +847,11 @@ namespace amfrac
               k = crack_penalty;
             else if (is_cohesive(cell, f))
               k = largest_ply_penalty();
+            if (contact_penalty > 0
+                && (cell->at_boundary(f) || is_crack(cell, f)
+                    || may_crack(cell, f)
+                    || (in_contact && in_contact(cell, f))))
+              k += contact_penalty;
             if (k == 0)
               continue;
             face_values.reinit(cell, f);

@@ -1120,49 +1120,45 @@ namespace amfrac
 
 
 
-    namespace
+    std::vector<unsigned int>
+    parse_interface_list(const std::string &text,
+                         const unsigned int n_interfaces,
+                         const std::string &parameter)
     {
-      /** Parse a list of interface indices below @p n_interfaces. */
-      std::vector<unsigned int>
-      parse_interface_list(const std::string &text,
-                           const unsigned int n_interfaces,
-                           const std::string &parameter)
-      {
-        std::vector<unsigned int> result;
-        if (Utilities::trim(text) == "all")
-          {
-            for (unsigned int k = 0; k < n_interfaces; ++k)
-              result.push_back(k);
-            return result;
-          }
-        for (const std::string &entry : Utilities::split_string_list(text))
-          {
-            std::size_t end   = 0;
-            long        value = -1;
-            try
-              {
-                value = std::stol(entry, &end);
-              }
-            catch (...)
-              {
-                end = 0;
-              }
-            require(end == entry.size() && value >= 0,
-                    parameter,
-                    "'" + entry + "' is not an interface index");
-            require(value < long(n_interfaces),
-                    parameter,
-                    "interface " + entry + " does not exist: the laminate "
-                      + "has " + std::to_string(n_interfaces)
-                      + " ply interfaces (0 to "
-                      + std::to_string(long(n_interfaces) - 1) + ")");
-            result.push_back(value);
-          }
-        std::sort(result.begin(), result.end());
-        result.erase(std::unique(result.begin(), result.end()), result.end());
-        return result;
-      }
-    } // namespace
+      std::vector<unsigned int> result;
+      if (Utilities::trim(text) == "all")
+        {
+          for (unsigned int k = 0; k < n_interfaces; ++k)
+            result.push_back(k);
+          return result;
+        }
+      for (const std::string &entry : Utilities::split_string_list(text))
+        {
+          std::size_t end   = 0;
+          long        value = -1;
+          try
+            {
+              value = std::stol(entry, &end);
+            }
+          catch (...)
+            {
+              end = 0;
+            }
+          require(end == entry.size() && value >= 0,
+                  parameter,
+                  "'" + entry + "' is not an interface index");
+          require(value < long(n_interfaces),
+                  parameter,
+                  "interface " + entry + " does not exist: the laminate "
+                    + "has " + std::to_string(n_interfaces)
+                    + " ply interfaces (0 to "
+                    + std::to_string(long(n_interfaces) - 1) + ")");
+          result.push_back(value);
+        }
+      std::sort(result.begin(), result.end());
+      result.erase(std::unique(result.begin(), result.end()), result.end());
+      return result;
+    }
 
 
 
@@ -1440,6 +1436,7 @@ namespace amfrac
       Checkpoint::declare_parameters(prm);
       CrackInsertion::declare_parameters(prm);
       Impactor::declare_parameters(prm);
+      Contact::declare_parameters(prm);
     }
 
 
@@ -1527,6 +1524,45 @@ namespace amfrac
         check_explicit_adaptivity_input();
       impactor.parse_parameters(prm, dimension);
       check_impactor_input();
+      contact.parse_parameters(prm, geometry.plies.size());
+      check_contact_input();
+    }
+
+
+
+    void
+    Parameters::check_contact_input() const
+    {
+      if (!contact.active)
+        return;
+      const std::string enable = "Contact/Enable";
+      require(time.explicit_dynamics,
+              enable,
+              "contact between the bodies is evaluated in explicit runs "
+              "only: it needs Time/Time integration = explicit");
+      require(!adaptivity.during_history(),
+              enable,
+              "the contact surfaces and their friction history are those "
+              "of the initial mesh; contact cannot be combined yet with a "
+              "mesh that adapts (Refine every, Error threshold, Process "
+              "zone elements)");
+      require(discretization.degree == 1,
+              enable,
+              "node-to-face contact needs Discretization/Finite element "
+              "degree = 1 (bilinear faces)");
+      require(!geometry.in_plane || contact.unbonded_interfaces.empty(),
+              "Contact/Unbonded interfaces",
+              "Geometry/2D model = in-plane homogenizes the plies through "
+              "the thickness, so there are no ply interfaces to release; "
+              "use 2D model = cross-section or Dimension = 3");
+      for (const unsigned int k : contact.unbonded_interfaces)
+        require(!std::binary_search(cohesive.interfaces.begin(),
+                                    cohesive.interfaces.end(),
+                                    k),
+                "Contact/Unbonded interfaces",
+                "interface " + std::to_string(k)
+                  + " is also in Cohesive interfaces/Interfaces: an "
+                    "interface is either bonded or not");
     }
 
 

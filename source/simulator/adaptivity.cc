@@ -230,9 +230,7 @@ namespace amfrac
   void
   Simulator<dim>::rebuild_after_mesh_change(const bool same_mesh)
   {
-    dof_layer.distribute(interfaces ? interfaces->released_faces() :
-                                      typename TiedCopyDoFs<dim>::FaceFilter(),
-                         same_mesh);
+    dof_layer.distribute(released_faces(), same_mesh);
     lever.collect(dof_layer);
     dof_layer.add_relevant_dofs(lever.all_dofs());
     for (auto &patch : loads.patches)
@@ -257,11 +255,7 @@ namespace amfrac
   ErrorEstimator<dim>
   Simulator<dim>::error_estimator() const
   {
-    return ErrorEstimator<dim>(dof_layer,
-                               plies,
-                               interfaces ?
-                                 interfaces->released_faces() :
-                                 typename TiedCopyDoFs<dim>::FaceFilter());
+    return ErrorEstimator<dim>(dof_layer, plies, released_faces());
   }
 
 

@@ -638,6 +638,8 @@ namespace amfrac
     run.put("explicit.remeshing_energy", state.remeshing_energy);
     for (std::size_t k = 0; k < state.impactor.size(); ++k)
       run.put("explicit.impactor." + std::to_string(k), state.impactor[k]);
+    if (!state.body_contact.empty())
+      run.put("explicit.body_contact", state.body_contact);
     for (const auto &[name, v] : state.vectors)
       save_vector(part, name, *v);
   }
@@ -686,6 +688,15 @@ namespace amfrac
                                  "was written by a run without one");
               state.impactor[k] = run.get_scalar(key);
             }
+        }
+      // The friction history and last positions of the surface nodes.
+      if (parameters.contact.active)
+        {
+          if (!run.has("explicit.body_contact"))
+            throw InputError("Contact/Enable",
+                             "the checkpoint has no contact state: it was "
+                             "written by a run without contact");
+          state.body_contact = run.get("explicit.body_contact");
         }
       for (const auto &[name, v] : state.vectors)
         restore_vector(name, *v);

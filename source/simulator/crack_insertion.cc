@@ -583,8 +583,9 @@ namespace amfrac
     for (const auto &cell : triangulation.active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
         {
+          // Fully debonded faces and unbonded interfaces separate bodies.
           if (cell->at_boundary(f) || cell->neighbor(f)->has_children()
-              || separated.count({cell->id(), f}) > 0)
+              || separated.count({cell->id(), f}) > 0 || is_unbonded(cell, f))
             continue;
           const unsigned int a   = root(cell->active_cell_index());
           const unsigned int b   = root(cell->neighbor(f)->active_cell_index());

@@ -111,6 +111,8 @@ namespace amfrac
     row_sums = with_ghosts;
     if (impactor)
       impactor->add_penalty_rows(row_sums);
+    if (body_contact)
+      body_contact->add_penalty_rows(row_sums);
   }
 
 
@@ -125,8 +127,9 @@ namespace amfrac
     // Interfaces: Gershgorin's bound on M^-1 K of the penalty springs.
     // Both bounds are Rayleigh quotients in the mass inner product, so
     // omega^2 of the sum is at most the sum.
-    double springs = 0;
-    if (interfaces || impactor)
+    double     springs = 0;
+    const bool contact = impactor || body_contact;
+    if (interfaces || contact)
       {
         Vector rows;
         penalty_row_sums(rows);
@@ -168,17 +171,17 @@ namespace amfrac
                               "MPa, densities in t/mm^3) and the mesh");
     pcout << "  stable time step " << stable << " s: elements alone "
           << 2. / std::sqrt(bulk) << " s (at " << bulk_where << ")";
-    if (interfaces || impactor)
+    if (interfaces || contact)
       pcout << ", " << (interfaces ? "interface " : "")
-            << (interfaces && impactor ? "and " : "")
-            << (impactor ? "contact " : "") << "penalties"
+            << (interfaces && contact ? "and " : "")
+            << (contact ? "contact " : "") << "penalties"
             << (interfaces && interfaces->cracks_enabled() ?
                   " (and any crack pattern)" :
                   "")
             << " alone " << 2. / std::sqrt(springs) << " s (at " << spring_where
             << "); controlled by the "
             << (springs <= bulk ? "elements" :
-                impactor        ? "penalties" :
+                contact         ? "penalties" :
                                   "interfaces");
     pcout << std::endl;
     // Stiffness-proportional damping: central differences are stable up
@@ -358,7 +361,7 @@ namespace amfrac
     Vector mass, velocity, acceleration, force, load, previous_load, reaction,
       previous_reaction, free_inverse_mass, support_mask, free_mass,
       damping_force, previous_damping, stiffness_velocity, displacement_step,
-      momentum, old_solution, last_good, contact;
+      momentum, old_solution, last_good, contact, body_force;
     // The work vectors on the current numbering (velocity and last_good
     // are state: a crack insertion carries them).
     const auto layout = [&](const bool with_state) {
@@ -378,7 +381,8 @@ namespace amfrac
                         &displacement_step,
                         &momentum,
                         &old_solution,
-                        &contact})
+                        &contact,
+                        &body_force})
         v->reinit(owned, comm);
       if (with_state)
         for (Vector *v : {&solution, &velocity, &last_good})
@@ -401,6 +405,14 @@ namespace amfrac
         impactor
           = std::make_unique<RigidImpactor<dim>>(parameters.impactor, comm);
         impactor->setup(dof_layer);
+      }
+    if (parameters.contact.active)
+      {
+        body_contact
+          = std::make_unique<BodyContact<dim>>(parameters.contact, comm);
+        body_contact->setup(dof_layer, released_faces(), paired_faces());
+        pcout << "  contact: " << body_contact->n_faces() << " surface faces, "
+              << body_contact->n_nodes() << " surface nodes" << std::endl;
       }
     const double end      = parameters.time.end_time;
     const double interval = end / parameters.time.n_steps;
@@ -524,6 +536,15 @@ namespace amfrac
           hanging->condense(contact);
           force -= contact;
         }
+      // Contact between the bodies: internal to the laminate, like the
+      // cohesive tractions.
+      if (body_contact)
+        {
+          TimerOutput::Scope scope(timer, "body contact");
+          body_contact->evaluate(solution, body_force);
+          hanging->condense(body_force);
+          force -= body_force;
+        }
       // One pass over the owned entries (all four vectors share the
       // layout): a = (f_ext - f_int) / m on free dofs, the reaction
       // f_int - f_ext on the supports.
@@ -568,6 +589,9 @@ namespace amfrac
           work += l.work;
       return work;
     };
+    // The penalty energy of the contact between the bodies.
+    auto body_contact_energy
+      = [&]() { return body_contact ? body_contact->contact_energy() : 0.; };
     auto ledger_row = [&](const double t_row) {
       relevant_solution                                   = solution;
       const double                                kinetic = kinetic_energy();
@@ -595,10 +619,28 @@ namespace amfrac
           const auto more = impactor->columns(t_row);
           columns.insert(columns.end(), more.begin(), more.end());
         }
+      double contact_and_friction = 0;
+      if (body_contact)
+        {
+          contact_and_friction = body_contact->contact_energy()
+                                 + body_contact->friction_dissipation();
+          columns.emplace_back("body_contact_energy",
+                               body_contact->contact_energy());
+          columns.emplace_back("friction_dissipation",
+                               body_contact->friction_dissipation());
+          const auto more = body_contact->columns();
+          columns.insert(columns.end(), more.begin(), more.end());
+          // Contact keeps the momentum of the free nodes (supports
+          // excepted): it is in the history to show it.
+          const auto p = linear_momentum();
+          for (unsigned int d = 0; d < dim; ++d)
+            columns.emplace_back(std::string("momentum_") + "xyz"[d], p[d]);
+        }
       columns.emplace_back("balance_error",
                            initial_energy + external_work + remeshing_energy
                              - kinetic - strain_energy - interface_work
-                             - damping_work - impactor_energy);
+                             - damping_work - impactor_energy
+                             - contact_and_friction);
       return columns;
     };
 
@@ -628,6 +670,8 @@ namespace amfrac
         t = state.base_t + (state.steps - state.base_steps) * dt;
         if (impactor)
           impactor->set_state(state.impactor);
+        if (body_contact)
+          body_contact->set_state(state.body_contact);
       }
     else
       {
@@ -636,6 +680,8 @@ namespace amfrac
         update_damping();
         evaluate(t);
         initial_energy = strain_energy + kinetic_energy();
+        if (body_contact)
+          initial_energy += body_contact->contact_energy();
         if (impactor)
           {
             if (impactor->penetration_depth() > 0)
@@ -670,6 +716,8 @@ namespace amfrac
       state.remeshing_energy = remeshing_energy;
       if (impactor)
         state.impactor = impactor->state();
+      if (body_contact)
+        state.body_contact = body_contact->state();
       save_explicit(state, run, part);
     };
     const unsigned long n_start = n;
@@ -841,18 +889,23 @@ namespace amfrac
             if (!chosen.empty())
               {
                 TimerOutput::Scope scope(timer, "crack insertion");
-                const double       before
-                  = kinetic_energy() + strain_energy + interface_work();
+                const double       before = kinetic_energy() + strain_energy
+                                      + interface_work()
+                                      + body_contact_energy();
                 insert_explicit_cracks(chosen,
                                        {&solution, &velocity, &last_good});
                 layout(false);
                 lump_mass();
                 split_mass();
                 build_operators();
+                if (body_contact)
+                  body_contact->setup(dof_layer,
+                                      released_faces(),
+                                      paired_faces());
                 update_damping();
                 evaluate(t);
-                const double after
-                  = kinetic_energy() + strain_energy + interface_work();
+                const double after = kinetic_energy() + strain_energy
+                                     + interface_work() + body_contact_energy();
                 log_crack_event(
                   {{"time", t},
                    {"step", static_cast<double>(n)},
@@ -926,6 +979,15 @@ namespace amfrac
         if (at_row || n % 10 == 0)
           checkpoint_after_step(out, n, at_row, n == steps_total(), save);
       }
+    if (body_contact && body_contact->n_evaluations > 0)
+      pcout << "  body contact: " << body_contact->n_faces()
+            << " surface faces, search " << body_contact->search_seconds
+            << " s, all contact work " << body_contact->evaluate_seconds
+            << " s over " << body_contact->n_evaluations << " evaluations ("
+            << body_contact->n_rebuilds << " candidate searches taking "
+            << body_contact->rebuild_seconds << " s, "
+            << 1e6 * body_contact->search_seconds / body_contact->n_evaluations
+            << " us of search per evaluation)" << std::endl;
     timer.print_wall_time_statistics(comm);
   }
 

@@ -21,10 +21,15 @@ namespace amfrac
     const auto may_crack = [this](const auto &cell, const unsigned int f) {
       return crack_candidate(cell, f);
     };
-    const double local = interfaces->crack_frequency_squared(dof_layer,
-                                                             element_mass,
-                                                             may_crack,
-                                                             where);
+    // Contact between the bodies: BodyContact's rows, 4 (k + k_t) with
+    // k = Penalty x area / 2, are the cohesive rows 2 k' area of a penalty
+    // k' = (1 + k_t / k) Penalty, on every face a node may be split along.
+    const auto  &contact = parameters.contact;
+    const double tangent = contact.friction > 0 ? contact.tangential_factor : 0;
+    const double penalty = contact.active ? (1 + tangent) * contact.penalty : 0;
+    const auto   released = released_faces();
+    const double local    = interfaces->crack_frequency_squared(
+      dof_layer, element_mass, may_crack, where, penalty, released);
     return max_and_where(local, where, comm);
   }
 

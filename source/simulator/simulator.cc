@@ -15,6 +15,53 @@
 namespace amfrac
 {
   template <int dim>
+  typename TiedCopyDoFs<dim>::FaceFilter
+  Simulator<dim>::paired_faces() const
+  {
+    if (!interfaces)
+      return typename TiedCopyDoFs<dim>::FaceFilter();
+    return interfaces->released_faces();
+  }
+
+
+
+  template <int dim>
+  typename TiedCopyDoFs<dim>::FaceFilter
+  Simulator<dim>::released_faces() const
+  {
+    const std::vector<unsigned int> &unbonded
+      = parameters.contact.unbonded_interfaces;
+    if (unbonded.empty())
+      return paired_faces();
+    return [this](const auto &cell, const unsigned int face) {
+      return is_unbonded(cell, face)
+             || (interfaces && interfaces->released_faces()(cell, face));
+    };
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::is_unbonded(
+    const typename Triangulation<dim>::cell_iterator &cell,
+    const unsigned int                                face) const
+  {
+    const std::vector<unsigned int> &unbonded
+      = parameters.contact.unbonded_interfaces;
+    if (unbonded.empty() || cell->at_boundary(face))
+      return false;
+    const unsigned int a = cell->material_id();
+    const unsigned int b = cell->neighbor(face)->material_id();
+    return (a + 1 == b || b + 1 == a)
+           && std::binary_search(unbonded.begin(),
+                                 unbonded.end(),
+                                 std::min(a, b));
+  }
+
+
+
+  template <int dim>
   Simulator<dim>::Simulator(const parameters::Parameters &prm,
                             const MPI_Comm                comm)
     : parameters(prm)
@@ -50,8 +97,7 @@ namespace amfrac
     if (parameters.total_lagrangian)
       finite_strain
         = std::make_unique<TotalLagrangianAssembler<dim>>(dof_layer, plies);
-    dof_layer.distribute(interfaces ? interfaces->released_faces() :
-                                      typename TiedCopyDoFs<dim>::FaceFilter());
+    dof_layer.distribute(released_faces());
     // The lever couples distant nodes: every rank sees all of them.
     lever.collect(dof_layer);
     dof_layer.add_relevant_dofs(lever.all_dofs());

@@ -434,6 +434,49 @@ $explicit
 subsection Impactor
   set Center = 0, 0
 end"
+contact='subsection Contact
+  set Enable = true
+end'
+expect contact_static "Contact/Enable" "$base
+$contact"
+expect contact_unbonded_disabled "Contact/Unbonded interfaces" "$base
+$explicit
+subsection Contact
+  set Unbonded interfaces = 1
+end"
+expect contact_unbonded_index "Contact/Unbonded interfaces" "$base
+$explicit
+$contact
+subsection Contact
+  set Unbonded interfaces = 7
+end"
+expect contact_unbonded_and_cohesive "Contact/Unbonded interfaces" "$base
+$explicit
+$contact
+subsection Contact
+  set Unbonded interfaces = 1
+end
+subsection Cohesive interfaces
+  set Interfaces = all
+end"
+expect contact_q2 "Contact/Enable" "$base
+$explicit
+$contact
+subsection Discretization
+  set Finite element degree = 2
+end"
+expect contact_adaptive "Contact/Enable" "$base
+$explicit
+$contact
+subsection Adaptivity
+  set Refine every = 1
+end"
+expect contact_penalty "Contact/Penalty" "$base
+$explicit
+$contact
+subsection Contact
+  set Penalty = 0
+end"
 expect adaptivity_history_region "refines one side of cohesive interface" "$base
 subsection Geometry
   set Refinement region = z > 0.25

@@ -232,15 +232,21 @@ namespace amfrac
      * it is, and every node of the cell a copy of its own, with the
      * cell's share of the lumped mass (@p element_mass). A copy shared by
      * several cells has its springs over its mass at most the largest
-     * ratio of its cells, so that the bound covers any splitting. Returns
-     * the bound on this rank, the dof's support point in @p where. */
+     * ratio of its cells, so that the bound covers any splitting. With
+     * @p contact_penalty > 0 (contact between the bodies, BodyContact's
+     * rows as a pressure per unit penetration), the faces @p in_contact
+     * selects carry it too, on top of their cohesive penalty. Returns the
+     * bound on this rank, the dof's support point in @p where. */
     double
     crack_frequency_squared(
       const TiedCopyDoFs<dim> &dofs,
       const std::function<void(const CellIterator &, dealii::Vector<double> &)>
         &element_mass,
       const std::function<bool(const CellIterator &, unsigned int)> &may_crack,
-      Point<dim> &where) const;
+      Point<dim>                                                    &where,
+      const double contact_penalty = 0,
+      const std::function<bool(const CellIterator &, unsigned int)> &in_contact
+      = {}) const;
 
     /** Explicit dynamics: @p f += the interface forces of the jumps of
      * @p u (local arrays, see set_local_indices()); updates the trial

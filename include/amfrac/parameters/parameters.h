@@ -2,6 +2,7 @@
 
 #include <amfrac/geometry/stacking_sequence.h>
 #include <amfrac/material/orthotropic.h>
+#include <amfrac/parameters/contact.h>
 #include <amfrac/parameters/crack_insertion.h>
 #include <amfrac/parameters/impactor.h>
 #include <array>
@@ -15,6 +16,14 @@ namespace amfrac
   namespace parameters
   {
     using namespace dealii;
+
+    /** Parse a list of ply interface indices below @p n_interfaces
+     * ('all', empty or comma separated; sorted, unique); InputError for
+     * @p parameter otherwise. */
+    std::vector<unsigned int>
+    parse_interface_list(const std::string &text,
+                         const unsigned int n_interfaces,
+                         const std::string &parameter);
 
     /** `subsection Geometry`: the laminate box and its structured mesh. */
     struct Geometry
@@ -445,6 +454,7 @@ namespace amfrac
       Checkpoint         checkpoint;
       CrackInsertion     cracks;
       Impactor           impactor;
+      Contact            contact;
       /** Every parameter with its value (ShortPRM), as read: the text a
        * checkpoint stores so that a restart can rebuild the run. */
       std::string text;
@@ -468,6 +478,9 @@ namespace amfrac
       /** Inputs an impactor cannot take (InputError). */
       void
       check_impactor_input() const;
+      /** Inputs contact between the bodies cannot take (InputError). */
+      void
+      check_contact_input() const;
       /** Inputs a linear buckling analysis cannot take (InputError). */
       void
       check_buckling_input() const;

@@ -8,6 +8,7 @@
 #include <amfrac/assembly/total_lagrangian.h>
 #include <amfrac/checkpoint/checkpoint_store.h>
 #include <amfrac/cohesive/interface_assembler.h>
+#include <amfrac/contact/body_contact.h>
 #include <amfrac/contact/rigid_impactor.h>
 #include <amfrac/dofs/hanging_condensation.h>
 #include <amfrac/dofs/tied_copy_dofs.h>
@@ -207,6 +208,8 @@ namespace amfrac
     std::unique_ptr<CohesiveInterfaces<dim>> interfaces;
     /** Explicit runs with an Impactor subsection (nullptr otherwise). */
     std::unique_ptr<RigidImpactor<dim>> impactor;
+    /** Explicit runs with Contact/Enable (nullptr otherwise). */
+    std::unique_ptr<BodyContact<dim>> body_contact;
     /** Crack insertion: where faces may crack (nullptr without crack
      * insertion), and the strength factor of every face (face f of active
      * cell c at c * faces_per_cell + f), evaluated once in a fixed order
@@ -423,7 +426,9 @@ namespace amfrac
       double        base_t           = 0;
       double        remeshing_energy = 0;
       /** RigidImpactor::state() (empty without an impactor). */
-      std::vector<double>             impactor;
+      std::vector<double> impactor;
+      /** BodyContact::state() (empty without contact). */
+      std::vector<double>             body_contact;
       std::map<std::string, Vector *> vectors;
     };
     void
@@ -550,6 +555,19 @@ namespace amfrac
     /** Rebuild everything that depends on the mesh. */
     void
     setup_after_refinement();
+    /** The faces the DoF layer leaves untied: cohesive interfaces, cracks
+     * and unbonded interfaces (Contact/Unbonded interfaces). */
+    typename TiedCopyDoFs<dim>::FaceFilter
+    released_faces() const;
+    /** Face @p face of @p cell lies on an unbonded interface
+     * (Contact/Unbonded interfaces): the plies on its sides are separate
+     * bodies. */
+    bool
+    is_unbonded(const typename Triangulation<dim>::cell_iterator &cell,
+                const unsigned int                                face) const;
+    /** The released faces with a cohesive partner (interfaces, cracks). */
+    typename TiedCopyDoFs<dim>::FaceFilter
+    paired_faces() const;
     /** The same without the timer section (inside the constructor's);
      * @p same_mesh: only more faces were released (crack insertion). */
     void

@@ -1,0 +1,258 @@
+#pragma once
+
+#include <amfrac/dofs/tied_copy_dofs.h>
+#include <amfrac/parameters/contact.h>
+#include <array>
+#include <cstdint>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace amfrac
+{
+  /**
+   * Contact between the laminate's own bodies (issue 10): penalty
+   * node-to-face contact with Coulomb friction, for explicit runs, with Q1
+   * elements.
+   *
+   * The surface is every outer face and both sides of every released face
+   * (cohesive interfaces, cracks, unbonded interfaces). Each surface node
+   * (a reduced node) is a slave of every surface face it is not excluded
+   * from: the faces the node is a vertex of are excluded, and so is a face
+   * of an outer or a paired surface (an interface or crack whose cohesive
+   * element keeps its own contact) if the node lay on it in the undeformed
+   * laminate (the other faces of its own cells lie too far behind it for
+   * the depth test below). So a crack face meeting a face it was never paired
+   * with, a fragment hitting another or a sublaminate sliding far along its
+   * neighbour are in contact, and a cohesive pair is not counted twice.
+   *
+   * Search: each face's box (its vertices, the points a depth behind
+   * them, 2 % of its size and twice a margin) in a uniform grid whose cell
+   * sizes are the mean box extents per direction; each node keeps the
+   * faces whose box holds it as candidates until some node has moved by a
+   * third of the margin (Verlet). O(faces + nodes) per search, and no pair
+   * of far faces is ever looked at. Narrow phase: the closest point of the
+   * bilinear face (Newton on its two coordinates), the gap g along the face's
+   * outward normal there; a node is in contact with the nearest face it
+   * penetrates by less than half the depth of the face's cell and half its
+   * shortest edge (deeper points belong to another face, e.g. the other side of
+   * a thin ply).
+   *
+   * Forces: the node gets -k g n and the face's nodes +k g N_a n
+   * (momentum exactly kept). For a fixed k that is the gradient of the
+   * potential k g^2 / 2, since the point is the closest one; k follows the
+   * normal (below), and the force leaves out its derivative, which
+   * vanishes for flat contact that does not turn. Both surfaces are slaves (two
+   * passes), each node with k = Penalty x area / 2, where area is its
+   * share of the area of its faces projected on the contact normal, so
+   * that matching meshes penetrate by pressure / Penalty; a node none of
+   * whose faces looks at a face is not in contact with it.
+   * Friction: the tangential force grows with the tangential slip
+   * increment relative to the face, k_t = factor x k, and is returned to
+   * the Coulomb cone mu k |g|; the dissipation is the work of the
+   * friction force (trapezoidal over the step) less the change of the
+   * stick springs' energy, so it is zero while sticking; a stick spring
+   * whose node leaves contact (or is split by a crack) releases its energy
+   * into the dissipation.
+   *
+   * MPI: every rank gathers the displacements of all surface nodes (one
+   * Allgatherv of the owned ones) and evaluates the whole surface in an
+   * order independent of the partition (nodes sorted by their undeformed
+   * position, faces by cell), then keeps the forces on its owned dofs. The
+   * forces, energies and histories are the same on any number of ranks bit
+   * for bit, and no reduction is needed; the cost per rank is that of the
+   * surface, not of the volume.
+   */
+  template <int dim>
+  class BodyContact
+  {
+  public:
+    using Vector     = TrilinosWrappers::MPI::Vector;
+    using FaceFilter = typename TiedCopyDoFs<dim>::FaceFilter;
+
+    BodyContact(const parameters::Contact &parameters, MPI_Comm comm);
+
+    /** The surface of the current mesh and numbering. @p released: the
+     * faces the DoF layer left untied; @p paired: those of them with a
+     * cohesive partner (interfaces and cracks). The friction history of a
+     * node moves with its key (its first cell and vertex), so it survives
+     * a crack insertion that renumbers the dofs. Collective. */
+    void
+    setup(const TiedCopyDoFs<dim> &dofs,
+          const FaceFilter        &released,
+          const FaceFilter        &paired);
+
+    /** The contact forces on the laminate at the displacement @p u
+     * (owned entries) into @p contact (owned entries, overwritten), and
+     * the update of the friction history from the last call. Collective. */
+    void
+    evaluate(const Vector &u, Vector &contact);
+
+    /** Penalty energy of the normal and stick springs at the last
+     * evaluate(). */
+    double
+    contact_energy() const
+    {
+      return energy;
+    }
+
+    /** Energy dissipated by friction since the start. */
+    double
+    friction_dissipation() const
+    {
+      return dissipation;
+    }
+
+    /** Explicit stability: each surface node's springs, as a slave and as
+     * a face node of the slaves on its faces, 4 (k + k_t) on each of its
+     * rows (owned entries of @p rows). */
+    void
+    add_penalty_rows(Vector &rows) const;
+
+    /** The history columns: nodes in contact, the sum of their normal and
+     * friction forces, the deepest penetration. */
+    std::vector<std::pair<std::string, double>>
+    columns() const;
+
+    /** Friction history, last positions and dissipation (for a
+     * checkpoint); the same on every rank. */
+    std::vector<double>
+    state() const;
+    void
+    set_state(const std::vector<double> &values);
+
+    /** Surface faces and nodes of the last setup(). */
+    std::size_t
+    n_faces() const
+    {
+      return faces.size();
+    }
+    std::size_t
+    n_nodes() const
+    {
+      return nodes.size();
+    }
+
+    /** Wall time of the search (grid and closest points) and of the
+     * whole evaluation, summed over the calls, and the number of calls. */
+    double        search_seconds = 0, evaluate_seconds = 0, rebuild_seconds = 0;
+    unsigned long n_evaluations = 0, n_rebuilds = 0;
+
+  private:
+    static constexpr unsigned int n_face_vertices = 1u << (dim - 1);
+
+    struct Node
+    {
+      std::array<types::global_dof_index, dim> dofs;
+      Point<dim>                               reference;
+      /** Half the penalty times the node's share of each of its faces'
+       * area, as a vector along the faces' outward normals, and the sum
+       * of the magnitudes. A node in contact with a face of normal n
+       * takes -area_penalty . n: the share of its faces that look at the
+       * face (a node on the edge of a block does not add the side face's
+       * area to the contact of its top face). */
+      Tensor<1, dim> area_penalty;
+      double         stiffness = 0;
+      /** (active cell index, vertex) of its first copy: partition- and
+       * numbering-independent. */
+      std::pair<unsigned int, unsigned int> key;
+    };
+
+    struct Face
+    {
+      std::array<unsigned int, n_face_vertices> nodes;
+      /** +1 or -1: turns the vertices' orientation into the outward
+       * normal of the face's cell. */
+      double sign;
+      /** Half the depth of the face's cell along its normal, at most half
+       * its shortest edge: deeper penetrations are not this face's. */
+      double depth;
+      /** Outer and paired faces exclude the nodes that lay on them. */
+      bool exclude_coincident;
+    };
+
+    struct History
+    {
+      Tensor<1, dim> friction;
+      /** |friction|^2 / (2 k_t) when it was stored. */
+      double stick_energy = 0;
+      bool   in_contact   = false;
+    };
+
+    /** Closest point of @p x on the face with vertex positions
+     * @p vertices: whether it lies within @p inside (in face coordinates)
+     * of the face, its coordinates (clamped to the face) and the point. */
+    bool
+    project(const std::array<Point<dim>, n_face_vertices> &vertices,
+            const Point<dim>                              &x,
+            Point<dim - 1>                                &xi,
+            Point<dim>                                    &on_face,
+            const double                                   inside) const;
+    /** The unit normal of the face (before its sign) at @p xi. */
+    Tensor<1, dim>
+    normal(const std::array<Point<dim>, n_face_vertices> &vertices,
+           const Point<dim - 1>                          &xi) const;
+    static std::array<double, n_face_vertices>
+    shape_values(const Point<dim - 1> &xi);
+    /** Node @p s lay on face @p f in the undeformed laminate. */
+    bool
+    coincident(const unsigned int s, const Face &face) const;
+    void
+    gather_positions(const Vector &u);
+    /** Find the candidate faces of every node again (grid and boxes) if
+     * a node has moved too far since the last time. */
+    void
+    update_candidates();
+
+    MPI_Comm comm;
+    double   penalty, friction_coefficient, tangential_factor;
+
+    std::vector<Node>    nodes;
+    std::vector<Face>    faces;
+    std::vector<History> history;
+    /** Current and last evaluation's positions of all nodes. */
+    std::vector<Point<dim>> positions, previous;
+    /** Nodes without a last position yet (new, or split by a crack). */
+    std::vector<bool> fresh;
+    /** The nodes this rank sends, and the gathered order of all ranks. */
+    std::vector<unsigned int> owned_nodes, gathered_nodes;
+    /** The owned nodes' entries in the owned part of a vector. */
+    std::vector<std::array<unsigned int, dim>> owned_local;
+    std::vector<int>                           gather_sizes, gather_offsets;
+    bool                                       have_previous = false;
+
+    /** A node in contact with a face: its closest point's coordinates,
+     * the normal there and the gap. */
+    struct Pair
+    {
+      unsigned int   slave, face;
+      Point<dim - 1> xi;
+      Tensor<1, dim> n;
+      double         gap;
+    };
+    /** Scratch of evaluate(), kept to reuse its memory: the faces' boxes,
+     * the grid (cell key, face) sorted, the pairs found. */
+    std::vector<std::pair<Point<dim>, Point<dim>>>      boxes;
+    std::vector<std::pair<std::uint64_t, unsigned int>> grid;
+    std::vector<Pair>                                   pairs;
+    /** Per node: its index among the owned nodes (-1: another rank's),
+     * and a mark used inside evaluate() (all false between calls); the
+     * nodes in contact at the last evaluate(). */
+    std::vector<int>          local_of_node;
+    std::vector<bool>         touching;
+    std::vector<unsigned int> last_slaves;
+    /** The candidate faces of each node (CSR), the positions they were
+     * found at and the margin the boxes were grown by. */
+    std::vector<unsigned int> candidate_start, candidates;
+    std::vector<Point<dim>>   built_positions;
+    double                    margin           = 0;
+    bool                      candidates_built = false;
+
+    double energy = 0, dissipation = 0, normal_force = 0, friction_force = 0,
+           penetration     = 0;
+    unsigned int n_contact = 0;
+  };
+} // namespace amfrac

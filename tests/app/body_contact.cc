@@ -1,0 +1,291 @@
+// Contact between the laminate's bodies (issue 10) against known answers:
+// - pressed: prm/contact_blocks.prm without shear (tau = 0): the contact
+//   force is the applied p A = 40 N (1e-4), the faces penetrate by
+//   p / Penalty (1 %), every one of the 9 + 9 face nodes touches, the
+//   balance closes to 1e-5 of the work (measured 1.0e-6, at the onset);
+//   pressed_2d: the same in plane strain (p L = 20 N/mm, 3 + 3 nodes);
+// - slide: tau = 6 MPa > mu p: the friction force is mu times the normal
+//   force (1e-4), the top block slides at the speed where the mass
+//   damping takes the rest, v = (tau - mu p) A / (alpha m) (1 %), friction
+//   dissipates mu N v (1 %), balance 1e-5 of the work;
+// - stick: tau = 1.5 MPa < mu p: the friction force is tau A (1 %), no
+//   dissipation (1e-9 of the work: round-off of the stick springs'
+//   energy), the block stops, balance 1e-5;
+// - collision: prm/bar_collision.prm: the momentum stays m v (1e-12), the
+//   contact ends at 2 L / c (within 4 %), then the top bar moves at v and
+//   the bottom one is at rest (2 % of v), the kinetic energy comes back
+//   to within 3 % (the rest rings in the bars), balance 1e-3.
+// - fragments: prm/fragment_collision.prm: the middle bar of three breaks
+//   at its middle cross-section and nowhere else (one crack face, four
+//   bodies), its halves fly into the outer bars: contact happens and ends
+//   by 2 (L / 2) / c (10 %), penetration at most twice that of a single
+//   node arriving at v on its contact spring, v sqrt(rho h / (2 Penalty))
+//   (1e-4 of the cell), the momentum stays zero (1e-12 of a half's m v),
+//   balance within 2 % of the initial energy.
+// usage: app_body_contact pressed|pressed_2d|slide|stick|collision|fragments
+// SCENE.prm
+//        WORKDIR
+#include "../check.h"
+#include "scene.h"
+
+#include <amfrac/simulator/simulator.h>
+#include <cmath>
+#include <deal.II/base/mpi.h>
+#include <sstream>
+
+using namespace amfrac;
+
+// CHECK_CLOSE with a tolerance relative to the expected value.
+#define CHECK_RELATIVE(value, expected, tol) \
+  CHECK_CLOSE((value), (expected), (tol)*std::abs(expected))
+
+namespace
+{
+  using amfrac_test::largest;
+
+  const double p = 10, area = 4, penalty = 5e5, mu = 0.3, alpha = 4e6;
+  const double density = 2.7e-9, modulus = 70000;
+
+  std::string
+  output_to(const std::string &workdir)
+  {
+    return "subsection Output\n  set Directory = " + workdir + "\nend\n";
+  }
+
+  std::string
+  with_shear(const double tau, const std::string &workdir)
+  {
+    std::ostringstream text;
+    text << "subsection Boundary conditions\n  set Function constants = p=" << p
+         << ", tau=" << tau << "\nend\n"
+         << output_to(workdir);
+    return text.str();
+  }
+
+  /** The balance relative to the external work, over all rows. */
+  double
+  relative_balance(const History &h)
+  {
+    const std::size_t last = h.n_rows() - 1;
+    return largest(h, "balance_error") / h.value(last, "external_work");
+  }
+
+  void
+  pressed(const std::string &scene, const std::string &workdir)
+  {
+    const auto simulator = amfrac_test::run_scene<3>(
+      scene,
+      with_shear(0, workdir)
+        + "subsection Contact\n  set Friction coefficient = 0\nend\n");
+    const History    &h    = simulator->history();
+    const std::size_t last = h.n_rows() - 1;
+    std::cout << "pressed: normal force "
+              << h.value(last, "body_contact_normal_force")
+              << " N, penetration " << h.value(last, "body_contact_penetration")
+              << " mm, nodes " << h.value(last, "body_contact_nodes")
+              << ", balance " << relative_balance(h) << std::endl;
+    CHECK_RELATIVE(h.value(last, "body_contact_normal_force"), p * area, 1e-4);
+    CHECK_RELATIVE(h.value(last, "body_contact_penetration"),
+                   p / penalty,
+                   1e-2);
+    CHECK(h.value(last, "body_contact_nodes") == 18);
+    CHECK(relative_balance(h) < 1e-5);
+  }
+
+  /** The same in plane strain: the blocks stacked along y, the force per
+   * unit thickness p L = 20 N/mm. */
+  void
+  pressed_2d(const std::string &scene, const std::string &workdir)
+  {
+    const std::string text
+      = "set Dimension = 2\n"
+        "subsection Boundary conditions\n"
+        "  subsection z-\n    set Type = free\n  end\n"
+        "  subsection z+\n    set Type = free\n  end\n"
+        "  subsection y-\n    set Type = displacement\n  end\n"
+        "  subsection y+\n    set Type = traction\n"
+        "    set Traction = 0; -p*min(t/5e-6, 1)\n  end\n"
+        "end\n"
+        "subsection Contact\n  set Friction coefficient = 0\nend\n"
+        "subsection Output\n  set Point values = 1, 2\nend\n";
+    const auto simulator
+      = amfrac_test::run_scene<2>(scene, with_shear(0, workdir) + text);
+    const History    &h    = simulator->history();
+    const std::size_t last = h.n_rows() - 1;
+    std::cout << "pressed 2D: normal force "
+              << h.value(last, "body_contact_normal_force")
+              << " N/mm, penetration "
+              << h.value(last, "body_contact_penetration") << " mm, nodes "
+              << h.value(last, "body_contact_nodes") << ", balance "
+              << relative_balance(h) << std::endl;
+    CHECK_RELATIVE(h.value(last, "body_contact_normal_force"), p * 2, 1e-4);
+    CHECK_RELATIVE(h.value(last, "body_contact_penetration"),
+                   p / penalty,
+                   1e-2);
+    CHECK(h.value(last, "body_contact_nodes") == 6);
+    CHECK(relative_balance(h) < 1e-5);
+  }
+
+  void
+  slide(const std::string &scene, const std::string &workdir)
+  {
+    const double tau = 6;
+    const auto   simulator
+      = amfrac_test::run_scene<3>(scene, with_shear(tau, workdir));
+    const History    &h    = simulator->history();
+    const std::size_t last = h.n_rows() - 1, before = last - 4;
+    const double      dt = h.value(last, "time") - h.value(before, "time");
+    const double      speed
+      = (h.value(last, "p0_ux") - h.value(before, "p0_ux")) / dt;
+    const double expected   = (tau - mu * p) * area / (alpha * density * area);
+    const double normal     = h.value(last, "body_contact_normal_force");
+    const double friction   = h.value(last, "body_contact_friction_force");
+    const double dissipated = (h.value(last, "friction_dissipation")
+                               - h.value(before, "friction_dissipation"))
+                              / dt;
+    std::cout << "slide: friction " << friction << " N of mu N " << mu * normal
+              << " N, speed " << speed << " mm/s of " << expected
+              << ", dissipation rate " << dissipated << " of "
+              << friction * speed << ", balance " << relative_balance(h)
+              << std::endl;
+    CHECK_RELATIVE(normal, p * area, 1e-3);
+    CHECK_RELATIVE(friction, mu * normal, 1e-4);
+    CHECK_RELATIVE(speed, expected, 1e-2);
+    CHECK_RELATIVE(dissipated, friction * speed, 1e-2);
+    CHECK(relative_balance(h) < 1e-5);
+  }
+
+  void
+  stick(const std::string &scene, const std::string &workdir)
+  {
+    const double tau = 1.5;
+    const auto   simulator
+      = amfrac_test::run_scene<3>(scene, with_shear(tau, workdir));
+    const History    &h    = simulator->history();
+    const std::size_t last = h.n_rows() - 1, before = last - 4;
+    const double      friction = h.value(last, "body_contact_friction_force");
+    const double      moved = h.value(last, "p0_ux") - h.value(before, "p0_ux");
+    std::cout << "stick: friction " << friction << " N of tau A " << tau * area
+              << " N, dissipated " << largest(h, "friction_dissipation")
+              << " N mm, last moved " << moved << " mm" << std::endl;
+    CHECK_RELATIVE(friction, tau * area, 1e-2);
+    CHECK(largest(h, "friction_dissipation")
+          < 1e-9 * h.value(last, "external_work"));
+    CHECK(std::abs(moved) < 1e-3 * std::abs(h.value(last, "p0_ux")));
+    CHECK(relative_balance(h) < 1e-5);
+  }
+
+  void
+  collision(const std::string &scene, const std::string &workdir)
+  {
+    const auto simulator = amfrac_test::run_scene<3>(scene, output_to(workdir));
+    const History &h     = simulator->history();
+    const double   v = 1000, length = 10, c = std::sqrt(modulus / density);
+    const double   momentum = density * 1 * 2 * length / 2 * v;
+    double         drift = 0, ends = 0;
+    for (std::size_t r = 0; r < h.n_rows(); ++r)
+      {
+        drift = std::max(drift, std::abs(h.value(r, "momentum_z") - momentum));
+        if (h.value(r, "body_contact_nodes") > 0)
+          ends = h.value(r, "time");
+      }
+    const std::size_t last = h.n_rows() - 1, before = last - 20;
+    const double      dt    = h.value(last, "time") - h.value(before, "time");
+    const auto        speed = [&](const std::string &column) {
+      return (h.value(last, column) - h.value(before, column)) / dt;
+    };
+    const double kinetic
+      = h.value(last, "kinetic_energy") / h.value(0, "kinetic_energy");
+    std::cout << "collision: momentum drift " << drift / momentum
+              << ", contact until " << ends
+              << " s (2 L / c = " << 2 * length / c << " s), top bar "
+              << speed("p1_uz") << " mm/s, bottom bar " << speed("p0_uz")
+              << " mm/s, kinetic energy back " << kinetic << ", balance "
+              << largest(h, "balance_error") / h.value(0, "kinetic_energy")
+              << std::endl;
+    CHECK(drift < 1e-12 * momentum);
+    CHECK_RELATIVE(ends, 2 * length / c, 4e-2);
+    CHECK_RELATIVE(speed("p1_uz"), v, 2e-2);
+    CHECK(std::abs(speed("p0_uz")) < 2e-2 * v);
+    CHECK(kinetic > 0.97 && kinetic <= 1);
+    CHECK(largest(h, "balance_error") < 1e-3 * h.value(0, "kinetic_energy"));
+  }
+
+  void
+  fragments(const std::string &scene, const std::string &workdir)
+  {
+    const auto simulator = amfrac_test::run_scene<3>(scene, output_to(workdir));
+    const History &h     = simulator->history();
+    const double   v = 1000, half = 2.5, c = std::sqrt(modulus / density);
+    const double   momentum = density * 1 * half * v;
+    double         drift = 0, ends = 0;
+    for (std::size_t r = 0; r < h.n_rows(); ++r)
+      {
+        drift = std::max(drift, std::abs(h.value(r, "momentum_z")));
+        if (h.value(r, "body_contact_nodes") > 0)
+          ends = h.value(r, "time");
+      }
+    const std::size_t last = h.n_rows() - 1;
+    // A node of a fragment (half a 0.5 mm cell's mass) arriving at v on
+    // its contact spring (Penalty x its area, both passes) penetrates by
+    // v sqrt(rho h / (2 Penalty)) before the bar behind it loads it.
+    const double cell  = 0.5,
+                 limit = 2 * v * std::sqrt(density * cell / (2 * penalty));
+    const double balance
+      = largest(h, "balance_error") / h.value(0, "kinetic_energy");
+    std::cout << "fragments: " << h.value(last, "fragments")
+              << " bodies, crack faces " << h.value(last, "crack_faces")
+              << ", contact until " << ends << " s (L / c = " << 2 * half / c
+              << " s), deepest " << largest(h, "body_contact_penetration")
+              << " mm (limit " << limit << "), momentum drift "
+              << drift / momentum << ", balance " << balance << std::endl;
+    CHECK(h.value(last, "fragments") == 4);
+    CHECK(h.value(last, "crack_faces") == 1);
+    CHECK(largest(h, "body_contact_nodes") > 0);
+    CHECK_RELATIVE(ends, 2 * half / c, 0.1);
+    CHECK(largest(h, "body_contact_penetration") < limit);
+    CHECK(drift < 1e-12 * momentum);
+    CHECK(balance < 2e-2);
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  if (argc != 4)
+    {
+      std::cerr
+        << "usage: app_body_contact "
+           "pressed|pressed_2d|slide|stick|collision|fragments SCENE.prm WORKDIR"
+        << std::endl;
+      return 2;
+    }
+  try
+    {
+      const std::string which = argv[1];
+      if (which == "pressed")
+        pressed(argv[2], argv[3]);
+      else if (which == "pressed_2d")
+        pressed_2d(argv[2], argv[3]);
+      else if (which == "slide")
+        slide(argv[2], argv[3]);
+      else if (which == "stick")
+        stick(argv[2], argv[3]);
+      else if (which == "collision")
+        collision(argv[2], argv[3]);
+      else if (which == "fragments")
+        fragments(argv[2], argv[3]);
+      else
+        {
+          std::cerr << "unknown case " << which << std::endl;
+          return 2;
+        }
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << e.what() << std::endl;
+      return 1;
+    }
+  return amfrac_test::summary();
+}
