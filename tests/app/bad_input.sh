@@ -471,6 +471,15 @@ $contact
 subsection Adaptivity
   set Refine every = 1
 end"
+expect contact_unbonded_in_plane "Contact/Unbonded interfaces" "$(with 'set Dimension = 3' 'set Dimension = 2')
+$explicit
+$contact
+subsection Geometry
+  set 2D model = in-plane
+end
+subsection Contact
+  set Unbonded interfaces = 1
+end"
 expect contact_penalty "Contact/Penalty" "$base
 $explicit
 $contact
