@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <amfrac/base/concatenate.h>
 #include <amfrac/contact/body_contact.h>
 #include <chrono>
 #include <cmath>
@@ -70,11 +71,15 @@ namespace amfrac
                           const FaceFilter        &paired)
   {
     // The old history by node key, for the nodes of the new surface.
-    std::map<std::pair<unsigned int, unsigned int>,
-             std::pair<History, Point<dim>>>
-      old;
+    struct Carried
+    {
+      History    history;
+      Point<dim> previous;
+      bool       fresh;
+    };
+    std::map<std::pair<unsigned int, unsigned int>, Carried> old;
     for (std::size_t i = 0; i < nodes.size(); ++i)
-      old[nodes[i].key] = {history[i], previous[i]};
+      old[nodes[i].key] = {history[i], previous[i], fresh[i]};
 
     const auto                          &fe = dofs.get_fe();
     std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
@@ -134,19 +139,15 @@ namespace amfrac
           Point<dim> center;
           for (const auto &x : vertices)
             center += x / double(n_face_vertices);
-          Point<dim - 1> middle;
-          for (unsigned int d = 0; d < dim - 1; ++d)
-            middle[d] = 0.5;
-          face.sign = normal(vertices, middle) * (center - cell->center()) > 0 ?
-                        1. :
-                        -1.;
-          const double area  = face_measure(vertices);
-          const double share = 0.5 * penalty * area / n_face_vertices;
+          const Tensor<1, dim> n = normal(vertices, face_middle());
+          face.sign              = n * (center - cell->center()) > 0 ? 1. : -1.;
+          const double area      = face_measure(vertices);
+          const double share     = 0.5 * penalty * area / n_face_vertices;
           for (unsigned int v = 0; v < n_face_vertices; ++v)
             {
               Node &node = found[face.dofs[v]];
               node.stiffness += share;
-              node.area_penalty += share * face.sign * normal(vertices, middle);
+              node.area_penalty += share * face.sign * n;
             }
           // Half the cell's depth, and at most half the face's shortest
           // edge: then the point a depth behind the face moves by at most
@@ -225,11 +226,11 @@ namespace amfrac
     for (std::size_t i = 0; i < nodes.size(); ++i)
       {
         const auto it = old.find(nodes[i].key);
-        if (it != old.end() && have_previous)
+        if (it != old.end())
           {
-            history[i]  = it->second.first;
-            previous[i] = it->second.second;
-            fresh[i]    = false;
+            history[i]  = it->second.history;
+            previous[i] = it->second.previous;
+            fresh[i]    = it->second.fresh;
             old.erase(it);
           }
       }
@@ -237,7 +238,7 @@ namespace amfrac
     // surface) release their energy: booked as dissipated, so that the
     // ledger stays closed.
     for (const auto &[key, entry] : old)
-      dissipation += entry.first.stick_energy;
+      dissipation += entry.history.stick_energy;
 
     // What each rank sends, and the gathered order.
     const IndexSet &owned = dofs.locally_owned_dofs();
@@ -265,35 +266,48 @@ namespace amfrac
     for (std::size_t k = 0; k < owned_nodes.size(); ++k)
       local_of_node[owned_nodes[k]] = k;
     touching.assign(nodes.size(), false);
+    collect_slaves();
+    // The gathered order, and the counts and offsets of the positions'
+    // gather in every step (the same from one step to the next).
+    gathered_nodes             = concatenate_over_ranks(owned_nodes, comm);
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    gather_sizes.clear();
+    gather_offsets.clear();
+    if (n_ranks > 1)
+      {
+        gather_sizes
+          = Utilities::MPI::all_gather(comm, int(dim * owned_nodes.size()));
+        gather_offsets.assign(n_ranks, 0);
+        std::partial_sum(gather_sizes.begin(),
+                         gather_sizes.end() - 1,
+                         gather_offsets.begin() + 1);
+      }
+    AssertThrow(gathered_nodes.size() == nodes.size(),
+                ExcMessage("contact: every surface node needs one owner"));
+  }
+
+
+
+  template <int dim>
+  Point<dim - 1>
+  BodyContact<dim>::face_middle()
+  {
+    Point<dim - 1> middle;
+    for (unsigned int d = 0; d < dim - 1; ++d)
+      middle[d] = 0.5;
+    return middle;
+  }
+
+
+
+  template <int dim>
+  void
+  BodyContact<dim>::collect_slaves()
+  {
     last_slaves.clear();
     for (unsigned int i = 0; i < nodes.size(); ++i)
       if (history[i].in_contact)
         last_slaves.push_back(i);
-    gathered_nodes             = owned_nodes;
-    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
-    if (n_ranks > 1)
-      {
-        const int        mine  = owned_nodes.size();
-        auto             sizes = Utilities::MPI::all_gather(comm, mine);
-        std::vector<int> offsets(n_ranks, 0);
-        std::partial_sum(sizes.begin(), sizes.end() - 1, offsets.begin() + 1);
-        gathered_nodes.resize(offsets.back() + sizes.back());
-        MPI_Allgatherv(owned_nodes.data(),
-                       mine,
-                       MPI_UNSIGNED,
-                       gathered_nodes.data(),
-                       sizes.data(),
-                       offsets.data(),
-                       MPI_UNSIGNED,
-                       comm);
-        gather_sizes.resize(n_ranks);
-        gather_offsets.resize(n_ranks);
-        for (unsigned int r = 0; r < n_ranks; ++r)
-          gather_sizes[r]   = dim * sizes[r],
-          gather_offsets[r] = dim * offsets[r];
-      }
-    AssertThrow(gathered_nodes.size() == nodes.size(),
-                ExcMessage("contact: every surface node needs one owner"));
   }
 
 
@@ -311,12 +325,13 @@ namespace amfrac
               = nodes[owned_nodes[k]].reference[d] + values[owned_local[k][d]];
         return;
       }
-    std::vector<double> mine;
-    mine.reserve(dim * owned_nodes.size());
+    // Buffers kept from step to step.
+    std::vector<double> &mine = send_buffer, &all = receive_buffer;
+    mine.clear();
     for (const auto &local : owned_local)
       for (unsigned int d = 0; d < dim; ++d)
         mine.push_back(values[local[d]]);
-    std::vector<double> all(dim * nodes.size());
+    all.resize(dim * nodes.size());
     MPI_Allgatherv(mine.data(),
                    mine.size(),
                    MPI_DOUBLE,
@@ -488,9 +503,7 @@ namespace amfrac
     Point<dim>     origin;
     for (unsigned int d = 0; d < dim; ++d)
       origin[d] = std::numeric_limits<double>::max();
-    Point<dim - 1> middle;
-    for (unsigned int d = 0; d < dim - 1; ++d)
-      middle[d] = 0.5;
+    const Point<dim - 1> middle = face_middle();
     for (std::size_t f = 0; f < faces.size(); ++f)
       {
         std::array<Point<dim>, n_face_vertices> v;
@@ -574,7 +587,6 @@ namespace amfrac
     for (std::size_t i = 0; i < nodes.size(); ++i)
       if (fresh[i])
         previous[i] = positions[i], fresh[i] = false;
-    have_previous = true;
 
     const Clock::time_point search_start = Clock::now();
     update_candidates();
@@ -761,11 +773,7 @@ namespace amfrac
           previous[i][d] = v[dim + 2 + d];
         fresh[i] = false;
       }
-    last_slaves.clear();
-    for (unsigned int i = 0; i < nodes.size(); ++i)
-      if (history[i].in_contact)
-        last_slaves.push_back(i);
-    have_previous = true;
+    collect_slaves();
   }
 
 

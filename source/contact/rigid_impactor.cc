@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <amfrac/base/concatenate.h>
 #include <amfrac/contact/rigid_impactor.h>
 #include <cmath>
 #include <deal.II/base/mpi.h>
@@ -119,24 +120,8 @@ namespace amfrac
     // Every rank gathers all shares and adds them in the order of the
     // nodes' positions: the numbering of the nodes depends on the
     // partition, their positions do not.
-    if (Utilities::MPI::n_mpi_processes(comm) > 1)
-      {
-        const int        mine  = shares.size();
-        const auto       sizes = Utilities::MPI::all_gather(comm, mine);
-        std::vector<int> offsets(sizes.size(), 0);
-        std::partial_sum(sizes.begin(), sizes.end() - 1, offsets.begin() + 1);
-        std::vector<double> all(offsets.back() + sizes.back());
-        MPI_Allgatherv(shares.data(),
-                       mine,
-                       MPI_DOUBLE,
-                       all.data(),
-                       sizes.data(),
-                       offsets.data(),
-                       MPI_DOUBLE,
-                       comm);
-        shares.swap(all);
-        deepest = Utilities::MPI::max(deepest, comm);
-      }
+    shares  = concatenate_over_ranks(shares, comm);
+    deepest = Utilities::MPI::max(deepest, comm);
     std::vector<std::size_t> order(shares.size() / stride);
     std::iota(order.begin(), order.end(), 0);
     std::sort(order.begin(), order.end(), [&](const auto a, const auto b) {

@@ -33,9 +33,9 @@ namespace amfrac
       = parameters.contact.unbonded_interfaces;
     if (unbonded.empty())
       return paired_faces();
-    return [this](const auto &cell, const unsigned int face) {
-      return is_unbonded(cell, face)
-             || (interfaces && interfaces->released_faces()(cell, face));
+    const auto paired = paired_faces();
+    return [this, paired](const auto &cell, const unsigned int face) {
+      return is_unbonded(cell, face) || (paired && paired(cell, face));
     };
   }
 

@@ -202,6 +202,12 @@ namespace amfrac
     coincident(const unsigned int s, const Face &face) const;
     void
     gather_positions(const Vector &u);
+    /** The local coordinates of a face's centre. */
+    static Point<dim - 1>
+    face_middle();
+    /** last_slaves from the history's contact flags. */
+    void
+    collect_slaves();
     /** Find the candidate faces of every node again (grid and boxes) if
      * a node has moved too far since the last time. */
     void
@@ -222,7 +228,7 @@ namespace amfrac
     /** The owned nodes' entries in the owned part of a vector. */
     std::vector<std::array<unsigned int, dim>> owned_local;
     std::vector<int>                           gather_sizes, gather_offsets;
-    bool                                       have_previous = false;
+    std::vector<double>                        send_buffer, receive_buffer;
 
     /** A node in contact with a face: its closest point's coordinates,
      * the normal there and the gap. */
