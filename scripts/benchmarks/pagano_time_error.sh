@@ -16,7 +16,7 @@ for mesh in $meshes; do
   for ranks in 1 2; do
     for solver in direct cg-amg; do
       prm=$work/run.prm
-      sed -e "s/@A@/10/g; s/@C@/5/g; s/@N@/$n/g; s/@NZ@/$nz/g" "$here/tests/app/pagano.prm" > "$prm"
+      sed -e "s/@A@/10/g; s/@C@/5/g; s/@N@/$n/g; s/@NZ@/$nz/g; s/@SHAPE@/hexahedron/g" "$here/tests/app/pagano.prm" > "$prm"
       cat >> "$prm" <<PRM
 subsection Discretization
   set Finite element degree = $degree

@@ -39,21 +39,21 @@ namespace amfrac
   class ElasticAssembler<dim>::Scratch
   {
   public:
-    Scratch(const Mapping<dim>       &mapping,
-            const FiniteElement<dim> &fe,
-            const unsigned int        degree)
-      : fe_values(mapping,
-                  fe,
-                  QGauss<dim>(degree),
+    /** Gauss rules with @p n_points points per direction on the cells
+     * and faces of @p dofs (hexahedra or wedges). */
+    Scratch(const TiedCopyDoFs<dim> &dofs, const unsigned int n_points)
+      : fe_values(dofs.get_mapping(),
+                  dofs.get_fe(),
+                  dofs.cell_quadrature(n_points),
                   update_values | update_gradients | update_quadrature_points
                     | update_JxW_values)
-      , face_values(mapping,
-                    fe,
-                    QGauss<dim - 1>(degree),
+      , face_values(dofs.get_mapping(),
+                    dofs.get_fe(),
+                    dofs.face_quadrature(n_points),
                     update_values | update_quadrature_points
                       | update_normal_vectors | update_JxW_values)
-      , strains(fe.n_dofs_per_cell())
-      , stresses(fe.n_dofs_per_cell())
+      , strains(dofs.get_fe().n_dofs_per_cell())
+      , stresses(dofs.get_fe().n_dofs_per_cell())
     {}
 
     FEValues<dim>                        fe_values;
@@ -250,9 +250,9 @@ namespace amfrac
                                        const CellList   &cells,
                                        Vector           &f) const
   {
-    f                    = 0;
-    const unsigned int n = dofs.get_fe().n_dofs_per_cell();
-    Scratch scratch(dofs.get_mapping(), dofs.get_fe(), quadrature_degree);
+    f                                      = 0;
+    const unsigned int                   n = dofs.get_fe().n_dofs_per_cell();
+    Scratch                              scratch(dofs, quadrature_degree);
     dealii::Vector<double>               cell_f(n);
     std::vector<types::global_dof_index> indices(n);
     // A load expression that is not defined at t (a sqrt of a negative
@@ -390,8 +390,8 @@ namespace amfrac
     const AffineConstraints<double> &constraints,
     Matrix                          &matrix) const
   {
-    const unsigned int n = dofs.get_fe().n_dofs_per_cell();
-    Scratch scratch(dofs.get_mapping(), dofs.get_fe(), quadrature_degree);
+    const unsigned int                   n = dofs.get_fe().n_dofs_per_cell();
+    Scratch                              scratch(dofs, quadrature_degree);
     FullMatrix<double>                   K(n, n);
     std::vector<types::global_dof_index> indices(n);
     matrix = 0;
@@ -453,8 +453,8 @@ namespace amfrac
     const AffineConstraints<double> &constraints,
     Matrix                          &matrix) const
   {
-    const unsigned int n = dofs.get_fe().n_dofs_per_cell();
-    Scratch scratch(dofs.get_mapping(), dofs.get_fe(), quadrature_degree);
+    const unsigned int                   n = dofs.get_fe().n_dofs_per_cell();
+    Scratch                              scratch(dofs, quadrature_degree);
     FullMatrix<double>                   KG(n, n);
     dealii::Vector<double>               u(n);
     std::vector<types::global_dof_index> indices(n);
@@ -482,8 +482,8 @@ namespace amfrac
     const AffineConstraints<double> &constraints,
     Vector                          &rhs) const
   {
-    const unsigned int n = dofs.get_fe().n_dofs_per_cell();
-    Scratch scratch(dofs.get_mapping(), dofs.get_fe(), quadrature_degree);
+    const unsigned int                   n = dofs.get_fe().n_dofs_per_cell();
+    Scratch                              scratch(dofs, quadrature_degree);
     FullMatrix<double>                   K(n, n);
     dealii::Vector<double>               f(n);
     std::vector<types::global_dof_index> indices(n);
@@ -529,8 +529,8 @@ namespace amfrac
                                           const Vector     &solution,
                                           Vector           &residual) const
   {
-    const unsigned int n = dofs.get_fe().n_dofs_per_cell();
-    Scratch scratch(dofs.get_mapping(), dofs.get_fe(), quadrature_degree);
+    const unsigned int                   n = dofs.get_fe().n_dofs_per_cell();
+    Scratch                              scratch(dofs, quadrature_degree);
     FullMatrix<double>                   K(n, n);
     dealii::Vector<double>               f(n), u(n), r(n);
     std::vector<types::global_dof_index> indices(n);
@@ -575,13 +575,36 @@ namespace amfrac
           m(i) += density * lobatto.shape_value(i, q) * lobatto.JxW(q);
     }
 
+    /** The rule on the element's nodes: Gauss-Lobatto on hypercubes; on a
+     * linear wedge its six vertices with equal weights, which lumps the
+     * mass as the row sum does (the quadratic wedge's lumped mass is not
+     * positive: the parameters refuse explicit runs with it). */
+    template <int dim>
+    Quadrature<dim>
+    nodal_rule(const TiedCopyDoFs<dim> &dofs)
+    {
+      const auto &shape = dofs.reference_cell();
+      if (shape.is_hyper_cube())
+        return QGaussLobatto<dim>(dofs.get_fe().degree + 1);
+      AssertThrow(dofs.get_fe().degree == 1,
+                  ExcMessage("lumped mass: only linear wedges"));
+      const Quadrature<dim>   one_point = dofs.cell_quadrature(1);
+      const double            volume    = one_point.weight(0);
+      std::vector<Point<dim>> vertices;
+      for (const unsigned int v : shape.vertex_indices())
+        vertices.push_back(shape.template vertex<dim>(v));
+      return Quadrature<dim>(vertices,
+                             std::vector<double>(vertices.size(),
+                                                 volume / vertices.size()));
+    }
+
     template <int dim>
     FEValues<dim>
-    lobatto_values(const Mapping<dim> &mapping, const FiniteElement<dim> &fe)
+    lobatto_values(const TiedCopyDoFs<dim> &dofs)
     {
-      return FEValues<dim>(mapping,
-                           fe,
-                           QGaussLobatto<dim>(fe.degree + 1),
+      return FEValues<dim>(dofs.get_mapping(),
+                           dofs.get_fe(),
+                           nodal_rule(dofs),
                            update_values | update_JxW_values);
     }
   } // namespace
@@ -592,9 +615,9 @@ namespace amfrac
   void
   ElasticAssembler<dim>::lumped_mass(Vector &mass) const
   {
-    const auto            &fe        = dofs.get_fe();
-    FEValues<dim>          fe_values = lobatto_values(dofs.get_mapping(), fe);
-    dealii::Vector<double> m(fe.n_dofs_per_cell());
+    const auto                          &fe        = dofs.get_fe();
+    FEValues<dim>                        fe_values = lobatto_values(dofs);
+    dealii::Vector<double>               m(fe.n_dofs_per_cell());
     std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
     mass = 0;
     for (const auto &cell : dofs.cells_with_owned_dofs())
@@ -615,7 +638,7 @@ namespace amfrac
     const typename TiedCopyDoFs<dim>::CellIterator &cell,
     dealii::Vector<double>                         &mass) const
   {
-    FEValues<dim> lobatto = lobatto_values(dofs.get_mapping(), dofs.get_fe());
+    FEValues<dim> lobatto = lobatto_values(dofs);
     lobatto.reinit(cell);
     mass.reinit(dofs.get_fe().n_dofs_per_cell());
     lobatto_lumped_mass(lobatto, plies[cell->material_id()].density, mass);
@@ -629,7 +652,7 @@ namespace amfrac
     const typename TiedCopyDoFs<dim>::CellIterator &cell,
     FullMatrix<double>                             &K) const
   {
-    Scratch scratch(dofs.get_mapping(), dofs.get_fe(), quadrature_degree);
+    Scratch scratch(dofs, quadrature_degree);
     scratch.fe_values.reinit(cell);
     K.reinit(dofs.get_fe().n_dofs_per_cell(), dofs.get_fe().n_dofs_per_cell());
     cell_matrix(scratch, cell->material_id(), K);
@@ -646,7 +669,7 @@ namespace amfrac
     const unsigned int n  = fe.n_dofs_per_cell();
     FullMatrix<double> K(n, n);
     element_stiffness(cell, K);
-    FEValues<dim> lobatto = lobatto_values(dofs.get_mapping(), fe);
+    FEValues<dim> lobatto = lobatto_values(dofs);
     lobatto.reinit(cell);
     dealii::Vector<double> m(n);
     lobatto_lumped_mass(lobatto, plies[cell->material_id()].density, m);

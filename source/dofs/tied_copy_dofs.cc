@@ -4,6 +4,8 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_dgq.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/fe_wedge_p.h>
+#include <deal.II/fe/mapping_fe.h>
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <stdexcept>
@@ -37,23 +39,108 @@ namespace amfrac
 
 
 
+  namespace
+  {
+    /** The discontinuous element whose copies the layer ties: Q on
+     * Gauss-Lobatto nodes on hypercubes, P on wedges. */
+    template <int dim>
+    std::unique_ptr<FESystem<dim>>
+    make_copy_element(const unsigned int degree, const ReferenceCell &shape)
+    {
+      if (shape.is_hyper_cube())
+        return std::make_unique<FESystem<dim>>(
+          FE_DGQArbitraryNodes<dim>(QGaussLobatto<1>(degree + 1)), dim);
+      if (dim == 3 && shape == ReferenceCells::Wedge)
+        return std::make_unique<FESystem<dim>>(FE_WedgeDGP<dim>(degree), dim);
+      throw std::invalid_argument("TiedCopyDoFs: cells must be hypercubes "
+                                  "or (3D) wedges");
+    }
+  } // namespace
+
+
+
   template <int dim>
   TiedCopyDoFs<dim>::TiedCopyDoFs(const Triangulation<dim> &triangulation,
-                                  const unsigned int        degree)
+                                  const unsigned int        degree,
+                                  const ReferenceCell      &shape)
     : triangulation(triangulation)
-    , fe(std::make_unique<FESystem<dim>>(FE_DGQArbitraryNodes<dim>(
-                                           QGaussLobatto<1>(degree + 1)),
-                                         dim))
+    , shape(shape)
+    , fe(make_copy_element<dim>(degree, shape))
     , dof_handler(triangulation)
-    , face_dofs(GeometryInfo<dim>::faces_per_cell)
+    , face_dofs(shape.n_faces())
   {
-    // A dof lies on reference face f if its support point has coordinate
-    // f%2 along axis f/2.
+    // A dof lies on reference face f if its support point lies in the
+    // plane of the face (through its first vertex, along its normal).
     const auto &unit_points = fe->get_unit_support_points();
-    for (unsigned int f = 0; f < GeometryInfo<dim>::faces_per_cell; ++f)
-      for (unsigned int i = 0; i < unit_points.size(); ++i)
-        if (std::abs(unit_points[i][f / 2] - double(f % 2)) < 1e-12)
-          face_dofs[f].push_back(i);
+    for (unsigned int f = 0; f < shape.n_faces(); ++f)
+      {
+        const Point<dim> corner = shape.template vertex<dim>(
+          shape.face_to_cell_vertices(f, 0, /*default orientation*/ 1));
+        const Tensor<1, dim> normal
+          = shape.template unit_normal_vectors<dim>(f);
+        for (unsigned int i = 0; i < unit_points.size(); ++i)
+          if (std::abs((unit_points[i] - corner) * normal) < 1e-12)
+            face_dofs[f].push_back(i);
+      }
+  }
+
+
+
+  namespace
+  {
+    /** Gauss on hypercubes, Witherden-Vincent (symmetric, positive
+     * weights) on triangles, their product on wedges. */
+    template <int dim>
+    Quadrature<dim>
+    gauss_rule(const ReferenceCell &shape, const unsigned int n)
+    {
+      if (shape.is_hyper_cube())
+        return QGauss<dim>(n);
+      if (shape.is_simplex())
+        return QWitherdenVincentSimplex<dim>(n);
+      AssertThrow(dim == 3 && shape == ReferenceCells::Wedge,
+                  ExcNotImplemented());
+      const QWitherdenVincentSimplex<2> triangle(n);
+      const QGauss<1>                   line(n);
+      std::vector<Point<dim>>           points;
+      std::vector<double>               weights;
+      for (unsigned int k = 0; k < line.size(); ++k)
+        for (unsigned int q = 0; q < triangle.size(); ++q)
+          {
+            Point<dim> p;
+            p[0]       = triangle.point(q)[0];
+            p[1]       = triangle.point(q)[1];
+            p[dim - 1] = line.point(k)[0];
+            points.push_back(p);
+            weights.push_back(triangle.weight(q) * line.weight(k));
+          }
+      return Quadrature<dim>(points, weights);
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  Quadrature<dim>
+  TiedCopyDoFs<dim>::cell_quadrature(const unsigned int n_points_1d) const
+  {
+    return gauss_rule<dim>(shape, n_points_1d);
+  }
+
+
+
+  template <int dim>
+  hp::QCollection<dim - 1>
+  TiedCopyDoFs<dim>::face_quadrature(const unsigned int n_points_1d) const
+  {
+    // One rule for faces that are all alike: MappingQ takes no more.
+    if (shape.is_hyper_cube())
+      return hp::QCollection<dim - 1>(QGauss<dim - 1>(n_points_1d));
+    hp::QCollection<dim - 1> rules;
+    for (unsigned int f = 0; f < shape.n_faces(); ++f)
+      rules.push_back(
+        gauss_rule<dim - 1>(shape.face_reference_cell(f), n_points_1d));
+    return rules;
   }
 
 
@@ -77,9 +164,13 @@ namespace amfrac
         const bool curved = std::any_of(ids.begin(), ids.end(), [](auto id) {
           return id != numbers::flat_manifold_id;
         });
-        mapping = curved && fe->degree > 1 ? std::unique_ptr<Mapping<dim>>(
-                    std::make_unique<MappingQ<dim>>(fe->degree)) :
-                                             std::make_unique<MappingQ1<dim>>();
+        if (!shape.is_hyper_cube())
+          mapping = get_linear_mapping().clone();
+        else
+          mapping = curved && fe->degree > 1 ?
+                      std::unique_ptr<Mapping<dim>>(
+                        std::make_unique<MappingQ<dim>>(fe->degree)) :
+                      std::make_unique<MappingQ1<dim>>();
       }
 
     // Real positions of all copies: copies are tied by position, so no
@@ -87,8 +178,7 @@ namespace amfrac
     if (copy_position.empty())
       {
         copy_position.resize(dof_handler.n_dofs());
-        const MappingQ1<dim>                 mapping;
-        FEValues<dim>                        fe_values(mapping,
+        FEValues<dim>                        fe_values(get_linear_mapping(),
                                 *fe,
                                 Quadrature<dim>(fe->get_unit_support_points()),
                                 update_quadrature_points);
@@ -154,7 +244,7 @@ namespace amfrac
     const std::vector<Point<dim>> &copy_position,
     const Callback                &callback) const
   {
-    const MappingQ1<dim>                 mapping;
+    const Mapping<dim>                  &mapping = get_linear_mapping();
     const unsigned int                   n_local = fe->n_dofs_per_cell();
     std::vector<types::global_dof_index> fine(n_local), coarse(n_local);
     HangingWeights                       weights;

@@ -77,6 +77,114 @@ namespace amfrac
               }
           }
     }
+
+    /** Every step split into @p parts equal steps. */
+    std::vector<double>
+    subdivide_steps(const std::vector<double> &steps, const unsigned int parts)
+    {
+      std::vector<double> fine;
+      for (const double step : steps)
+        fine.insert(fine.end(), parts, step / parts);
+      return fine;
+    }
+
+    /** Boundary ids 0..2*dim-1 on the faces x-, x+, y-, y+, (z-, z+) of
+     * the box [0, box] (deal.II's colorize numbering). */
+    template <int dim>
+    void
+    colorize_box_faces(const Point<dim> &box, Triangulation<dim> &tria)
+    {
+      const double tol = 1e-10 * box.norm();
+      for (const auto &cell : tria.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              const Point<dim> c = cell->face(f)->center();
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  if (std::abs(c[d]) < tol)
+                    cell->face(f)->set_boundary_id(2 * d);
+                  else if (std::abs(c[d] - box[d]) < tol)
+                    cell->face(f)->set_boundary_id(2 * d + 1);
+                }
+            }
+    }
+
+    /** The structured box of subdivided_hyper_rectangle with the same
+     * vertices, every hexahedron split into two wedges: the in-plane
+     * diagonal alternates like a chessboard so that the mesh has no
+     * preferred direction, and no diagonal ends in the corner of the box
+     * (with an even number of cells per side): a corner triangle would be
+     * one element stiff in the plate's corner, where a simply supported
+     * plate has its concentrated corner force. */
+    template <int dim>
+    void
+    make_prism_box(const std::vector<std::vector<double>> &steps,
+                   const Point<dim>                       &box,
+                   Triangulation<dim>                     &triangulation)
+    {
+      if constexpr (dim != 3)
+        {
+          (void)steps;
+          (void)box;
+          (void)triangulation;
+          throw InputError("Geometry/Element shape",
+                           "prisms need Dimension = 3");
+        }
+      else
+        {
+          std::array<std::vector<double>, 3> coordinates;
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              coordinates[d] = {0.};
+              for (const double step : steps[d])
+                coordinates[d].push_back(coordinates[d].back() + step);
+            }
+          const unsigned int nx = steps[0].size(), ny = steps[1].size(),
+                             nz = steps[2].size();
+          const auto vertex
+            = [&](unsigned int i, unsigned int j, unsigned int k) {
+                return (k * (ny + 1) + j) * (nx + 1) + i;
+              };
+          std::vector<Point<3>> vertices;
+          for (unsigned int k = 0; k <= nz; ++k)
+            for (unsigned int j = 0; j <= ny; ++j)
+              for (unsigned int i = 0; i <= nx; ++i)
+                vertices.emplace_back(coordinates[0][i],
+                                      coordinates[1][j],
+                                      coordinates[2][k]);
+          std::vector<CellData<3>> cells;
+          const unsigned int       layer = vertex(0, 0, 1);
+          for (unsigned int k = 0; k < nz; ++k)
+            for (unsigned int j = 0; j < ny; ++j)
+              for (unsigned int i = 0; i < nx; ++i)
+                {
+                  // The quad a b c d counterclockwise from +z; both
+                  // triangles keep that orientation, so the wedges have a
+                  // positive Jacobian.
+                  const unsigned int a = vertex(i, j, k), b = a + 1,
+                                     c = vertex(i + 1, j + 1, k), d = c - 1;
+                  const std::array<std::array<unsigned int, 3>, 2> triangles
+                    = (i + j) % 2 == 1 ?
+                        std::array<std::array<unsigned int, 3>, 2>{
+                          {{{a, b, c}}, {{a, c, d}}}} :
+                        std::array<std::array<unsigned int, 3>, 2>{
+                          {{{a, b, d}}, {{b, c, d}}}};
+                  for (const auto &triangle : triangles)
+                    {
+                      CellData<3> cell(6);
+                      for (unsigned int v = 0; v < 3; ++v)
+                        {
+                          cell.vertices[v]     = triangle[v];
+                          cell.vertices[v + 3] = triangle[v] + layer;
+                        }
+                      cells.push_back(cell);
+                    }
+                }
+          triangulation.create_triangulation(vertices, cells, SubCellData());
+          colorize_box_faces(box, triangulation);
+        }
+    }
   } // namespace
 
 
@@ -115,6 +223,15 @@ namespace amfrac
       box[dim - 1] = laminate.thickness();
     if (geometry.hole_radius > 0)
       make_open_hole_mesh(geometry, laminate, triangulation);
+    else if (geometry.prisms)
+      {
+        // Wedges cannot be refined: the refinements are made by
+        // subdividing every step before the mesh is built.
+        const unsigned int parts = 1u << geometry.global_refinements;
+        for (auto &axis : steps)
+          axis = subdivide_steps(axis, parts);
+        make_prism_box(steps, box, triangulation);
+      }
     else
       GridGenerator::subdivided_hyper_rectangle(
         triangulation, steps, Point<dim>(), box, /*colorize=*/true);
@@ -131,7 +248,8 @@ namespace amfrac
             std::min<unsigned int>(upper - laminate.ply_boundaries.begin() - 1,
                                    laminate.n_plies() - 1));
       }
-    triangulation.refine_global(geometry.global_refinements);
+    if (!geometry.prisms)
+      triangulation.refine_global(geometry.global_refinements);
 
     if (geometry.mesh_distortion > 0)
       {

@@ -79,6 +79,22 @@ namespace amfrac
                         "Random interior-vertex perturbation as a fraction "
                         "of the element size (for patch tests); ply "
                         "interfaces stay planar.");
+      prm.declare_entry(
+        "Element shape",
+        "hexahedron",
+        Patterns::Selection("hexahedron|prism"),
+        "hexahedron: the box is meshed with structured hexahedra. prism "
+        "(Dimension = 3): every in-plane cell of the same structured grid "
+        "is split into two triangles (the diagonals alternate like a "
+        "chessboard) and extruded through the element layers of the "
+        "plies, so each hexahedron becomes two wedges on the same "
+        "vertices; Global refinements multiply the numbers of elements "
+        "instead of refining (deal.II cannot refine wedges). Prisms take "
+        "linear static scenes (with Refinement cycles = 0) and explicit "
+        "runs with Finite element degree = 1, with VTU output, without "
+        "cohesive interfaces, crack insertion, contact, an impactor, a "
+        "patch load, buckling, total Lagrangian kinematics, a hole or a "
+        "Refinement region so far.");
       prm.declare_entry("2D model",
                         "cross-section",
                         Patterns::Selection("cross-section|in-plane"),
@@ -174,6 +190,7 @@ namespace amfrac
       elements_per_ply       = prm.get_integer("Elements per ply");
       global_refinements     = prm.get_integer("Global refinements");
       mesh_distortion        = prm.get_double("Mesh distortion");
+      prisms                 = prm.get("Element shape") == "prism";
       hole_radius            = prm.get_double("Hole radius");
       in_plane               = prm.get("2D model") == "in-plane";
       refinement_region      = Utilities::trim(prm.get("Refinement region"));
@@ -1526,6 +1543,50 @@ namespace amfrac
       check_impactor_input();
       contact.parse_parameters(prm, geometry.plies.size());
       check_contact_input();
+      check_prism_input();
+    }
+
+
+
+    void
+    Parameters::check_prism_input() const
+    {
+      if (!geometry.prisms)
+        return;
+      const std::string name = "Geometry/Element shape";
+      const auto refuse = [&](const bool condition, const std::string &what) {
+        if (condition)
+          throw InputError(name,
+                           "a prism mesh cannot be combined yet with " + what);
+      };
+      refuse(dimension != 3,
+             "Dimension = 2 (prisms are the 3D extrusion of triangles)");
+      refuse(geometry.hole_radius > 0, "Geometry/Hole radius > 0");
+      refuse(!geometry.refinement_region.empty(),
+             "a Geometry/Refinement region (deal.II cannot refine wedges)");
+      refuse(adaptivity.active(),
+             "adaptivity (deal.II cannot refine wedges; global remeshing "
+             "is not implemented yet)");
+      refuse(!cohesive.interfaces.empty(), "Cohesive interfaces/Interfaces");
+      refuse(cracks.active, "Crack insertion/Criterion");
+      refuse(contact.active, "Contact/Enable");
+      refuse(impactor.active, "an impactor (Impactor/Radius > 0)");
+      refuse(total_lagrangian, "Kinematics = total Lagrangian");
+      refuse(buckling.active() || geometry.imperfection_mode > 0,
+             "a linear buckling analysis (Buckling/Number of modes, "
+             "Geometry/Imperfection mode)");
+      refuse(time.explicit_dynamics && discretization.degree != 1,
+             "Time/Time integration = explicit with Discretization/Finite "
+             "element degree = 2 (the lumped mass of a quadratic wedge is "
+             "not positive)");
+      refuse(output.write_xdmf,
+             "Output/Field format = xdmf or vtu+xdmf (deal.II 9.4 writes "
+             "wedges into XDMF as tetrahedra); use vtu");
+      refuse(!boundary_conditions.patch.face.empty(),
+             "a Boundary conditions/Patch load (its fine face rule is for "
+             "quadrilateral faces)");
+      refuse(time.explicit_dynamics && time.mass_scaling_step > 0,
+             "Time/Mass scaling time step > 0");
     }
 
 

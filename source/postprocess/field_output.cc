@@ -149,8 +149,13 @@ namespace amfrac
     for (const auto &[name, values] : cell_fields)
       if (values.size() == ply.size())
         data_out.add_data_vector(values, name, DataOut<dim>::type_cell_data);
+    // deal.II 9.4 subdivides hypercube patches only: wedges are written
+    // as linear wedges on their vertices (a P2 field shows its vertex
+    // values).
     data_out.build_patches(dofs.get_mapping(),
-                           dofs.get_fe().degree,
+                           dofs.reference_cell().is_hyper_cube() ?
+                             dofs.get_fe().degree :
+                             1,
                            DataOut<dim>::curved_boundary);
 
     const std::string stem

@@ -1,3 +1,5 @@
+#include <algorithm>
+#include <amfrac/base/reference_cells.h>
 #include <amfrac/postprocess/point_probe.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe_values.h>
@@ -15,21 +17,9 @@ namespace amfrac
     : dofs(dofs)
     , plies(plies)
   {
-    const Mapping<dim> &mapping = dofs.get_mapping();
     for (const Point<dim> &p : points)
       {
-        std::pair<typename TiedCopyDoFs<dim>::CellIterator, Point<dim>> found;
-        try
-          {
-            found
-              = GridTools::find_active_cell_around_point(mapping,
-                                                         dofs.copy_handler(),
-                                                         p);
-          }
-        catch (...)
-          {
-            found.first = dofs.copy_handler().end();
-          }
+        const auto found = locate(p);
         if (found.first.state() != IteratorState::valid)
           {
             std::ostringstream text;
@@ -37,9 +27,52 @@ namespace amfrac
             throw std::invalid_argument(text.str());
           }
         cells.push_back(found.first);
-        unit_points.push_back(
-          GeometryInfo<dim>::project_to_unit_cell(found.second));
+        unit_points.push_back(found.second);
       }
+  }
+
+
+
+  template <int dim>
+  std::pair<typename TiedCopyDoFs<dim>::CellIterator, Point<dim>>
+  PointProbe<dim>::locate(const Point<dim> &p) const
+  {
+    const Mapping<dim> &mapping = dofs.get_mapping();
+    const auto         &shape   = dofs.reference_cell();
+    if (shape.is_hyper_cube())
+      {
+        try
+          {
+            const auto found
+              = GridTools::find_active_cell_around_point(mapping,
+                                                         dofs.copy_handler(),
+                                                         p);
+            if (found.first.state() == IteratorState::valid)
+              return {found.first,
+                      project_to_reference_cell(shape, found.second)};
+          }
+        catch (...)
+          {}
+        return {dofs.copy_handler().end(), Point<dim>()};
+      }
+    // deal.II 9.4's search tests the unit cube, which is wrong for a wedge
+    // (inside_reference_cell()): the cells are searched here, once per
+    // probe at setup, and the first one that contains the point (up to
+    // round-off) is taken.
+    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
+      {
+        if (cell->center().distance(p) > cell->diameter())
+          continue;
+        try
+          {
+            const Point<dim> unit = real_to_unit<dim>(mapping, cell, p);
+            if (inside_reference_cell(shape, unit, 1e-10))
+              return {cell, project_to_reference_cell(shape, unit)};
+          }
+        catch (const typename Mapping<dim>::ExcTransformationFailed &)
+          {}
+      }
+    return {dofs.copy_handler().end(), Point<dim>()};
   }
 
 

@@ -71,7 +71,10 @@ namespace amfrac
     , triangulation(comm)
     , laminate(prm.geometry, prm.materials)
     , plies(make_ply_table<dim>(laminate, prm.materials))
-    , dof_layer(triangulation, prm.discretization.degree)
+    , dof_layer(triangulation,
+                prm.discretization.degree,
+                prm.geometry.prisms ? ReferenceCells::Wedge :
+                                      ReferenceCells::get_hypercube<dim>())
     , assembler(dof_layer, plies)
     , lever(prm.boundary_conditions)
   {
@@ -471,7 +474,8 @@ namespace amfrac
     if (finite_strain)
       pcout << "total Lagrangian, ";
     pcout << triangulation.n_active_cells() << " cells, " << dof_layer.n_dofs()
-          << " unknowns (" << dof_layer.n_copies() << " node copies), Q"
+          << " unknowns (" << dof_layer.n_copies() << " node copies), "
+          << (dof_layer.reference_cell().is_hyper_cube() ? "Q" : "prisms P")
           << dof_layer.get_fe().degree << ", "
           << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)"
           << std::endl;
@@ -715,8 +719,8 @@ namespace amfrac
                                       copy_values,
                                       exact,
                                       cellwise,
-                                      QGauss<dim>(dof_layer.get_fe().degree
-                                                  + 3),
+                                      dof_layer.cell_quadrature(
+                                        dof_layer.get_fe().degree + 3),
                                       norm);
     return VectorTools::compute_global_error(triangulation, cellwise, norm);
   }

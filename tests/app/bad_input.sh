@@ -480,6 +480,37 @@ end
 subsection Contact
   set Unbonded interfaces = 1
 end"
+prism='subsection Geometry
+  set Element shape = prism
+end'
+expect prism_2d "Geometry/Element shape" "$(with 'set Dimension = 3' 'set Dimension = 2')
+$prism"
+expect prism_cohesive "Geometry/Element shape" "$base
+$prism
+subsection Cohesive interfaces
+  set Interfaces = all
+end"
+expect prism_region "Geometry/Element shape" "$base
+$prism
+subsection Geometry
+  set Refinement region = x < 2
+end"
+expect prism_adaptivity "Geometry/Element shape" "$base
+$prism
+subsection Adaptivity
+  set Refinement cycles = 2
+end"
+expect prism_xdmf "Geometry/Element shape" "$base
+$prism
+subsection Output
+  set Field format = xdmf
+end"
+expect prism_explicit_q2 "Geometry/Element shape" "$base
+$prism
+$explicit
+subsection Discretization
+  set Finite element degree = 2
+end"
 expect contact_penalty "Contact/Penalty" "$base
 $explicit
 $contact

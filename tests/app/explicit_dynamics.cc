@@ -85,13 +85,18 @@ namespace
     return error;
   }
 
+  /** @p overrides: parameters appended to the scene (the prism bar). */
   void
-  bar(const std::string &prm, const std::string &workdir)
+  bar(const std::string &prm,
+      const std::string &workdir,
+      const std::string &overrides = "")
   {
     const double E = 135300, rho = 1.6e-9, L = 200, p = 10;
     const double c = std::sqrt(E / rho), u_max = 2 * p * L / E;
     const auto   parameters = parameters::Parameters::from_string(
-      read(prm, "subsection Output\n  set Directory = " + workdir + "\nend\n"));
+      read(prm,
+           overrides + "subsection Output\n  set Directory = " + workdir
+             + "\nend\n"));
     Simulator<3> simulator(parameters, MPI_COMM_WORLD);
     simulator.run();
     const History &h = simulator.history();
@@ -135,8 +140,9 @@ namespace
     // A fixed step above the stable one is refused before any step.
     const auto too_large = parameters::Parameters::from_string(
       read(prm,
-           "subsection Time\n  set Time step = 1e-6\nend\n"
-           "subsection Output\n  set Directory = "
+           overrides
+             + "subsection Time\n  set Time step = 1e-6\nend\n"
+               "subsection Output\n  set Directory = "
              + workdir + "-bad\nend\n"));
     bool refused = false;
     try
@@ -342,13 +348,16 @@ namespace
   vibrating_plate(const std::string &prm,
                   const std::string &workdir,
                   const bool         with_interfaces,
-                  const std::string &time)
+                  const std::string &time,
+                  const std::string &geometry = "")
   {
     return parameters::Parameters::from_string(read(
       prm,
       "subsection Geometry\n  set Elements along length = 10\n"
-      "  set Elements along width = 10\nend\n"
-      "subsection Cohesive interfaces\n  set Interfaces = "
+      "  set Elements along width = 10\n"
+        + geometry
+        + "end\n"
+          "subsection Cohesive interfaces\n  set Interfaces = "
         + std::string(with_interfaces ? "1, 5" : "")
         + "\nend\n"
           "subsection Boundary conditions\n  subsection Patch load\n"
@@ -495,7 +504,11 @@ namespace
   /** Does the vibrating plate with interfaces blow up within 2000 steps
    * of @p dt? */
   bool
-  diverges(const std::string &prm, const std::string &workdir, const double dt)
+  diverges(const std::string &prm,
+           const std::string &workdir,
+           const double       dt,
+           const bool         with_interfaces = true,
+           const std::string &geometry        = "")
   {
     std::ostringstream time;
     time << std::setprecision(17) << "  set Time step = " << dt
@@ -503,8 +516,9 @@ namespace
          << 2000 * dt << "\n  set Number of steps = 2000\n";
     try
       {
-        Simulator<3> simulator(vibrating_plate(prm, workdir, true, time.str()),
-                               MPI_COMM_WORLD);
+        Simulator<3> simulator(
+          vibrating_plate(prm, workdir, with_interfaces, time.str(), geometry),
+          MPI_COMM_WORLD);
         simulator.run();
       }
     catch (const CollectiveError &e)
@@ -517,32 +531,53 @@ namespace
   /** The stable-step estimate against the true critical step, found by
    * bisection: the estimate is safe, by less than a factor 2. */
   void
-  stability(const std::string &prm, const std::string &workdir)
+  stability(const std::string &prm,
+            const std::string &workdir,
+            const bool         with_interfaces = true,
+            const std::string &geometry        = "")
   {
     Simulator<3> probe(vibrating_plate(prm,
                                        workdir,
-                                       true,
+                                       with_interfaces,
                                        "  set End time = 1e-7\n"
-                                       "  set Number of steps = 1\n"),
+                                       "  set Number of steps = 1\n",
+                                       geometry),
                        MPI_COMM_WORLD);
     probe.run();
-    const double estimate = probe.estimated_stable_time_step();
-    CHECK(!diverges(prm, workdir, 0.9 * estimate));
+    const double estimate    = probe.estimated_stable_time_step();
+    const auto   unstable_at = [&](const double dt) {
+      return diverges(prm, workdir, dt, with_interfaces, geometry);
+    };
+    CHECK(!unstable_at(0.9 * estimate));
     double stable = estimate, unstable = 2 * estimate;
-    CHECK(!diverges(prm, workdir, stable));
-    CHECK(diverges(prm, workdir, unstable));
+    CHECK(!unstable_at(stable));
+    CHECK(unstable_at(unstable));
     for (int i = 0; i < 8; ++i)
       {
-        const double middle = 0.5 * (stable + unstable);
-        (diverges(prm, workdir, middle) ? unstable : stable) = middle;
+        const double middle                       = 0.5 * (stable + unstable);
+        (unstable_at(middle) ? unstable : stable) = middle;
       }
     const double critical = 0.5 * (stable + unstable);
     std::cout << "estimated stable step " << estimate
               << " s, critical step by bisection " << critical << " s (ratio "
               << critical / estimate << ")" << std::endl;
-    CHECK(diverges(prm, workdir, 1.2 * critical));
+    CHECK(unstable_at(1.2 * critical));
     CHECK(estimate <= critical && critical <= 2 * estimate);
   }
+
+  /** P1 prisms: the bar against 1D wave theory on twice the elements along
+   * the bar (P1 instead of Q2 on the same nodes' spacing), and the
+   * stable-step estimate of the vibrating plate split into wedges. */
+  const std::string prism_bar   = "subsection Geometry\n"
+                                  "  set Element shape = prism\n"
+                                  "  set Elements along length = 80\n"
+                                  "  set Elements along width = 4\n"
+                                  "  set Elements per ply = 4\n"
+                                  "end\n"
+                                  "subsection Discretization\n"
+                                  "  set Finite element degree = 1\n"
+                                  "end\n";
+  const std::string prism_plate = "  set Element shape = prism\n";
 } // namespace
 
 int
@@ -552,7 +587,8 @@ main(int argc, char **argv)
   if (argc != 4 && argc != 5)
     {
       std::cerr << "usage: app_explicit_dynamics "
-                   "bar|dcb|impact|vibration|damping|stability SCENE.prm "
+                   "bar|dcb|impact|vibration|damping|stability|bar_prism|"
+                   "stability_prism SCENE.prm "
                    "WORKDIR "
                    "[REFERENCE.csv]\n";
       return 2;
@@ -570,6 +606,10 @@ main(int argc, char **argv)
     damping_and_mass_scaling(argv[2], argv[3]);
   else if (mode == "stability")
     stability(argv[2], argv[3]);
+  else if (mode == "bar_prism")
+    bar(argv[2], argv[3], prism_bar);
+  else if (mode == "stability_prism")
+    stability(argv[2], argv[3], /*with_interfaces=*/false, prism_plate);
   else
     {
       std::cerr << "unknown mode " << mode << std::endl;

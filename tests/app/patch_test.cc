@@ -3,8 +3,9 @@
 // (uniform in-plane strain, through-thickness strains chosen per ply so that
 // the laminate is traction free on z = const planes) is reproduced to
 // round-off by Q1 and Q2, also where part of the mesh is refined (hanging
-// nodes). The same in 2D plane strain (y through the thickness). Runs on any
-// number of MPI ranks.
+// nodes). The same in 2D plane strain (y through the thickness), and in 3D
+// on the distorted mesh split into wedges (P1 and P2 prisms, no refinement:
+// wedges cannot be refined). Runs on any number of MPI ranks.
 #include "../check.h"
 
 #include <amfrac/parameters/parameters.h>
@@ -163,8 +164,8 @@ subsection Geometry
   set Elements along width  = 3
   set Elements per ply      = 2
   set Mesh distortion       = 0.25
-  set Refinement region     = x < 1.5
-  set Region refinements    = 1
+  set Element shape         = @SHAPE@
+@REGION@
 end
 subsection Discretization
   set Finite element degree = @DEGREE@
@@ -180,16 +181,24 @@ end
    * traction free) and compare. */
   template <int dim, typename Field>
   void
-  check_patch(const std::string &degree)
+  check_patch(const std::string &degree, const bool prisms = false)
   {
-    const auto prm
-      = parameters::Parameters::from_string(amfrac_test::substitute(
-        amfrac_test::substitute(scene, "@DIM@", std::to_string(dim)),
-        "@DEGREE@",
-        degree));
-    const Laminate laminate(prm.geometry, prm.materials);
-    const auto     plies = make_ply_table<dim>(laminate, prm.materials);
-    auto           exact = std::make_shared<Field>(laminate, plies);
+    using amfrac_test::substitute;
+    const std::string region = prisms ?
+                                 "" :
+                                 "  set Refinement region     = x < 1.5\n"
+                                 "  set Region refinements    = 1";
+    const auto        prm    = parameters::Parameters::from_string(substitute(
+      substitute(substitute(substitute(scene, "@DIM@", std::to_string(dim)),
+                            "@DEGREE@",
+                            degree),
+                 "@SHAPE@",
+                 prisms ? "prism" : "hexahedron"),
+      "@REGION@",
+      region));
+    const Laminate    laminate(prm.geometry, prm.materials);
+    const auto        plies = make_ply_table<dim>(laminate, prm.materials);
+    auto              exact = std::make_shared<Field>(laminate, plies);
 
     Simulator<dim>                           simulator(prm, MPI_COMM_WORLD);
     std::vector<PrescribedDisplacement<dim>> supports;
@@ -206,11 +215,16 @@ end
     const double norm  = simulator.compute_error(zero, VectorTools::L2_norm);
     const double h1 = simulator.compute_error(*exact, VectorTools::H1_seminorm);
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      std::cout << dim << "D Q" << degree << ": relative L2 error "
-                << error / norm << ", H1 seminorm error " << h1 << std::endl;
+      std::cout << dim << "D " << (prisms ? "prism P" : "Q") << degree
+                << ": relative L2 error " << error / norm
+                << ", H1 seminorm error " << h1 << std::endl;
     CHECK(error / norm < 1e-10);
     CHECK(h1 < 1e-10);
     CHECK(norm > 1e-4); // the field is not trivially zero
+    // The mesh is made of the shape asked for.
+    CHECK(simulator.dofs().reference_cell()
+          == (prisms ? ReferenceCells::Wedge :
+                       ReferenceCells::get_hypercube<dim>()));
   }
 } // namespace
 
@@ -221,6 +235,7 @@ main(int argc, char *argv[])
   for (const std::string degree : {"1", "2"})
     {
       check_patch<3, LaminatePatchField>(degree);
+      check_patch<3, LaminatePatchField>(degree, /*prisms=*/true);
       check_patch<2, PlaneStrainPatchField>(degree);
     }
   return amfrac_test::summary();

@@ -4,6 +4,8 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping.h>
+#include <deal.II/grid/reference_cell.h>
+#include <deal.II/hp/q_collection.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
@@ -39,8 +41,13 @@ namespace amfrac
     using FaceFilter
       = std::function<bool(const CellIterator &cell, const unsigned int face)>;
 
+    /** Copies of the element of @p degree for cells of @p shape: the
+     * hypercube (Q elements on quadrilaterals and hexahedra) or, in 3D, the
+     * wedge (P elements on prisms). Every cell of the mesh has that shape. */
     TiedCopyDoFs(const Triangulation<dim> &triangulation,
-                 const unsigned int        degree);
+                 const unsigned int        degree,
+                 const ReferenceCell      &shape
+                 = ReferenceCells::get_hypercube<dim>());
 
     /** Build the copies and the tie map; faces for which @p released
      * returns true stay untied. On a hanging face, a fine copy that sits on
@@ -76,6 +83,33 @@ namespace amfrac
     {
       return *fe;
     }
+
+    /** The shape of every cell (hypercube or wedge). */
+    const ReferenceCell &
+    reference_cell() const
+    {
+      return shape;
+    }
+
+    /** The straight-sided mapping of the cell shape (MappingQ1, or the
+     * linear wedge map): where the copies are, whatever the manifolds. */
+    const Mapping<dim> &
+    get_linear_mapping() const
+    {
+      return shape.template get_default_linear_mapping<dim>();
+    }
+
+    /** The Gauss rule exact to degree 2 n - 1 (@p n_points_1d = n) on the
+     * cell shape: QGauss, or on a wedge the Witherden-Vincent triangle rule
+     * times QGauss<1> (n at most 7; deal.II's QGaussWedge stops at 4). */
+    Quadrature<dim>
+    cell_quadrature(const unsigned int n_points_1d) const;
+
+    /** The same rules on the faces, for FEFaceValues: one rule for the
+     * faces of a hypercube, one per face in face order on a wedge (it has
+     * triangles and quadrilaterals). */
+    hp::QCollection<dim - 1>
+    face_quadrature(const unsigned int n_points_1d) const;
 
     /** Number of reduced unknowns. */
     types::global_dof_index
@@ -195,6 +229,7 @@ namespace amfrac
 
   private:
     const Triangulation<dim>              &triangulation;
+    const ReferenceCell                    shape;
     std::unique_ptr<FESystem<dim>>         fe;
     std::unique_ptr<Mapping<dim>>          mapping;
     DoFHandler<dim>                        dof_handler;

@@ -40,6 +40,10 @@ namespace amfrac
       unsigned int        elements_per_ply;
       unsigned int        global_refinements;
       double              mesh_distortion;
+      /** Geometry/Element shape = prism (3D): each in-plane cell of the
+       * structured mesh is split into two triangles and extruded, so the
+       * plies are layers of wedges. */
+      bool prisms = false;
       /** 2D only: the model plane is the laminate's (x, y) plane (plane
        * stress, the stacking homogenized through the thickness) instead
        * of the (x, thickness) cross-section (plane strain). */
@@ -496,6 +500,10 @@ namespace amfrac
       /** What crack insertion cannot be combined with yet (InputError). */
       void
       check_crack_input() const;
+      /** What a prism (wedge) mesh cannot be combined with yet
+       * (InputError). */
+      void
+      check_prism_input() const;
     };
 
     /** Split "a; b; c" into trimmed expressions. */

@@ -30,6 +30,11 @@ namespace amfrac
     evaluate(const dealii::Vector<double> &copy_values) const;
 
   private:
+    /** The cell around @p p and the point's (projected) reference
+     * coordinates in it; an end iterator if no cell contains @p p. */
+    std::pair<typename TiedCopyDoFs<dim>::CellIterator, Point<dim>>
+    locate(const Point<dim> &p) const;
+
     const TiedCopyDoFs<dim>                              &dofs;
     const std::vector<PlyProperties<dim>>                &plies;
     std::vector<typename TiedCopyDoFs<dim>::CellIterator> cells;

@@ -1,0 +1,292 @@
+#include <algorithm>
+#include <amfrac/adaptivity/mesh_transfer.h>
+#include <amfrac/base/reference_cells.h>
+#include <boost/geometry/index/rtree.hpp>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/fe_wedge_p.h>
+#include <iterator>
+#include <limits>
+#include <stdexcept>
+
+namespace amfrac
+{
+  namespace bgi = boost::geometry::index;
+
+  template <int dim>
+  CellLocator<dim>::CellLocator(const TiedCopyDoFs<dim> &dofs)
+    : dofs(dofs)
+  {
+    // Boxes of the vertices, grown by a little of the cell's size so that
+    // a point on a face (round-off either way) finds both cells.
+    std::map<types::material_id, std::vector<std::pair<Box, CellIterator>>>
+      boxes;
+    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
+      {
+        Box box = dofs.get_mapping().get_bounding_box(cell);
+        box.extend(1e-8 * cell->diameter());
+        boxes[cell->material_id()].emplace_back(box, cell);
+      }
+    for (auto &[ply, list] : boxes)
+      trees.emplace(ply, pack_rtree(list));
+  }
+
+
+
+  template <int dim>
+  typename CellLocator<dim>::Location
+  CellLocator<dim>::locate(const Point<dim>        &p,
+                           const types::material_id ply) const
+  {
+    const auto tree = trees.find(ply);
+    if (tree == trees.end())
+      throw std::invalid_argument("CellLocator: the mesh has no cell of ply "
+                                  + std::to_string(ply));
+    std::vector<std::pair<Box, CellIterator>> candidates;
+    tree->second.query(bgi::intersects(p), std::back_inserter(candidates));
+    if (candidates.empty())
+      tree->second.query(bgi::nearest(p, 8), std::back_inserter(candidates));
+
+    const auto &mapping = dofs.get_mapping();
+    const auto &shape   = dofs.reference_cell();
+    Location    nearest{candidates.front().second, Point<dim>(), false};
+    double      distance = std::numeric_limits<double>::infinity();
+    for (const auto &[box, cell] : candidates)
+      {
+        Point<dim> unit;
+        try
+          {
+            unit = real_to_unit<dim>(mapping, cell, p);
+          }
+        catch (const typename Mapping<dim>::ExcTransformationFailed &)
+          {
+            continue;
+          }
+        if (inside_reference_cell(shape, unit, 1e-10))
+          return {cell, project_to_reference_cell(shape, unit), true};
+        const Point<dim> projected = project_to_reference_cell(shape, unit);
+        const double     d
+          = p.distance(mapping.transform_unit_to_real_cell(cell, projected));
+        if (d < distance)
+          {
+            distance = d;
+            nearest  = {cell, projected, false};
+          }
+      }
+    if (!std::isfinite(distance))
+      throw std::runtime_error("CellLocator: no cell maps to the point");
+    return nearest;
+  }
+
+
+
+  namespace
+  {
+    /** The linear scalar element of @p shape: its shape function k
+     * belongs to vertex k of the cell. */
+    template <int dim>
+    std::unique_ptr<FiniteElement<dim>>
+    linear_element(const ReferenceCell &shape)
+    {
+      if constexpr (dim == 3)
+        if (shape == ReferenceCells::Wedge)
+          return std::make_unique<FE_WedgeP<dim>>(1);
+      AssertThrow(shape.is_hyper_cube(), ExcNotImplemented());
+      return std::make_unique<FE_Q<dim>>(1);
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  NonMatchingTransfer<dim>::NonMatchingTransfer(
+    const TiedCopyDoFs<dim> &old_dofs,
+    const TiedCopyDoFs<dim> &new_dofs)
+    : old_dofs(old_dofs)
+    , new_dofs(new_dofs)
+    , old_cells(old_dofs)
+    , new_cells(new_dofs)
+  {
+    for (const auto &cell : old_dofs.copy_handler().active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+        slots.emplace(std::make_pair(cell->vertex_index(v),
+                                     cell->material_id()),
+                      slots.size());
+  }
+
+
+
+  template <int dim>
+  Vector<double>
+  NonMatchingTransfer<dim>::nodal(const Vector<double> &old_copies) const
+  {
+    const auto &old_fe = old_dofs.get_fe(), &new_fe = new_dofs.get_fe();
+    std::vector<types::global_dof_index> old_indices(old_fe.n_dofs_per_cell()),
+      new_indices(new_fe.n_dofs_per_cell());
+    Vector<double> copies(new_dofs.n_copies());
+    outside = 0;
+    for (const auto &cell : new_dofs.copy_handler().active_cell_iterators())
+      {
+        cell->get_dof_indices(new_indices);
+        for (unsigned int i = 0; i < new_indices.size(); ++i)
+          {
+            const Point<dim> p
+              = new_dofs.get_linear_mapping().transform_unit_to_real_cell(
+                cell, new_fe.unit_support_point(i));
+            const unsigned int c = new_fe.system_to_component_index(i).first;
+            const auto         found = old_cells.locate(p, cell->material_id());
+            outside += found.inside ? 0 : 1;
+            found.cell->get_dof_indices(old_indices);
+            double value = 0;
+            for (unsigned int j = 0; j < old_indices.size(); ++j)
+              if (old_fe.system_to_component_index(j).first == c)
+                value += old_fe.shape_value(j, found.unit)
+                         * old_copies[old_indices[j]];
+            copies[new_indices[i]] = value;
+          }
+      }
+    return copies;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::vector<double>>
+  NonMatchingTransfer<dim>::project_to_vertices(
+    const Field             &old_field,
+    const Quadrature<dim>   &old_points,
+    const std::vector<Rule> &rules) const
+  {
+    const auto         linear = linear_element<dim>(old_dofs.reference_cell());
+    FEValues<dim>      values(old_dofs.get_mapping(),
+                         *linear,
+                         old_points,
+                         update_values | update_JxW_values);
+    const unsigned int n_components = rules.size();
+    std::vector<std::vector<double>> sums(n_components,
+                                          std::vector<double>(slots.size()));
+    std::vector<double>              weights(slots.size());
+    for (const auto &cell : old_dofs.copy_handler().active_cell_iterators())
+      {
+        // The linear element is not the copy layer's: a mesh cell, not a DoF
+        // cell, for its shape values.
+        values.reinit(typename Triangulation<dim>::cell_iterator(cell));
+        const auto &field = old_field[cell->active_cell_index()];
+        for (const unsigned int k : cell->vertex_indices())
+          {
+            const unsigned int slot
+              = slots.at({cell->vertex_index(k), cell->material_id()});
+            for (const unsigned int q : values.quadrature_point_indices())
+              {
+                const double w = values.shape_value(k, q) * values.JxW(q);
+                weights[slot] += w;
+                for (unsigned int c = 0; c < n_components; ++c)
+                  if (rules[c] == Rule::smooth)
+                    sums[c][slot] += w * field[q * n_components + c];
+              }
+          }
+      }
+    for (auto &component : sums)
+      for (unsigned int s = 0; s < slots.size(); ++s)
+        component[s] /= weights[s];
+    return sums;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::vector<double>>
+  NonMatchingTransfer<dim>::largest_inside_new_cells(
+    const Field             &old_field,
+    const Quadrature<dim>   &old_points,
+    const std::vector<Rule> &rules) const
+  {
+    const unsigned int               n_components = rules.size();
+    std::vector<std::vector<double>> largest(
+      new_dofs.copy_handler().get_triangulation().n_active_cells(),
+      std::vector<double>(n_components,
+                          -std::numeric_limits<double>::infinity()));
+    FEValues<dim> values(old_dofs.get_mapping(),
+                         old_dofs.get_fe(),
+                         old_points,
+                         update_quadrature_points);
+    for (const auto &cell : old_dofs.copy_handler().active_cell_iterators())
+      {
+        values.reinit(cell);
+        const auto &field = old_field[cell->active_cell_index()];
+        for (const unsigned int q : values.quadrature_point_indices())
+          {
+            const auto found = new_cells.locate(values.quadrature_point(q),
+                                                cell->material_id());
+            auto      &into  = largest[found.cell->active_cell_index()];
+            for (unsigned int c = 0; c < n_components; ++c)
+              if (rules[c] == Rule::non_decreasing)
+                into[c] = std::max(into[c], field[q * n_components + c]);
+          }
+      }
+    return largest;
+  }
+
+
+
+  template <int dim>
+  typename NonMatchingTransfer<dim>::Field
+  NonMatchingTransfer<dim>::quadrature(const Field             &old_field,
+                                       const Quadrature<dim>   &old_points,
+                                       const std::vector<Rule> &rules,
+                                       const Quadrature<dim> &new_points) const
+  {
+    const unsigned int n_components = rules.size();
+    const auto         vertex_values
+      = project_to_vertices(old_field, old_points, rules);
+    const auto largest = largest_inside_new_cells(old_field, old_points, rules);
+    const auto linear  = linear_element<dim>(old_dofs.reference_cell());
+
+    FEValues<dim> values(new_dofs.get_mapping(),
+                         new_dofs.get_fe(),
+                         new_points,
+                         update_quadrature_points);
+    Field field(new_dofs.copy_handler().get_triangulation().n_active_cells(),
+                std::vector<double>(new_points.size() * n_components));
+    outside = 0;
+    for (const auto &cell : new_dofs.copy_handler().active_cell_iterators())
+      {
+        values.reinit(cell);
+        auto &into = field[cell->active_cell_index()];
+        for (const unsigned int q : values.quadrature_point_indices())
+          {
+            const auto found = old_cells.locate(values.quadrature_point(q),
+                                                cell->material_id());
+            outside += found.inside ? 0 : 1;
+            const auto &old_values = old_field[found.cell->active_cell_index()];
+            for (unsigned int c = 0; c < n_components; ++c)
+              {
+                double &value = into[q * n_components + c];
+                if (rules[c] == Rule::smooth)
+                  {
+                    value = 0;
+                    for (const unsigned int k : found.cell->vertex_indices())
+                      value += linear->shape_value(k, found.unit)
+                               * vertex_values[c][slots.at(
+                                 {found.cell->vertex_index(k),
+                                  cell->material_id()})];
+                  }
+                else
+                  {
+                    value = largest[cell->active_cell_index()][c];
+                    for (unsigned int p = 0; p < old_points.size(); ++p)
+                      value = std::max(value, old_values[p * n_components + c]);
+                  }
+              }
+          }
+      }
+    return field;
+  }
+
+
+
+  template class CellLocator<2>;
+  template class CellLocator<3>;
+  template class NonMatchingTransfer<2>;
+  template class NonMatchingTransfer<3>;
+} // namespace amfrac
