@@ -7,6 +7,7 @@
 #include <deal.II/fe/fe_wedge_p.h>
 #include <iterator>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 namespace amfrac
@@ -76,6 +77,24 @@ namespace amfrac
     if (!std::isfinite(distance))
       throw std::runtime_error("CellLocator: no cell maps to the point");
     return nearest;
+  }
+
+
+
+  template <int dim>
+  typename CellLocator<dim>::Location
+  CellLocator<dim>::locate(const Point<dim> &p) const
+  {
+    std::optional<Location> first;
+    for (const auto &[ply, tree] : trees)
+      {
+        const Location found = locate(p, ply);
+        if (found.inside)
+          return found;
+        if (!first)
+          first = found;
+      }
+    return *first;
   }
 
 

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <amfrac/adaptivity/mesh_transfer.h>
 #include <amfrac/base/reference_cells.h>
 #include <amfrac/postprocess/point_probe.h>
 #include <deal.II/base/mpi.h>
@@ -17,9 +18,14 @@ namespace amfrac
     : dofs(dofs)
     , plies(plies)
   {
+    // deal.II 9.4's search tests the unit cube, which is wrong for a wedge
+    // (inside_reference_cell()): on wedges the transfer's locator searches.
+    std::unique_ptr<CellLocator<dim>> wedges;
+    if (!dofs.reference_cell().is_hyper_cube())
+      wedges = std::make_unique<CellLocator<dim>>(dofs);
     for (const Point<dim> &p : points)
       {
-        const auto found = locate(p);
+        const auto found = locate(p, wedges.get());
         if (found.first.state() != IteratorState::valid)
           {
             std::ostringstream text;
@@ -35,7 +41,8 @@ namespace amfrac
 
   template <int dim>
   std::pair<typename TiedCopyDoFs<dim>::CellIterator, Point<dim>>
-  PointProbe<dim>::locate(const Point<dim> &p) const
+  PointProbe<dim>::locate(const Point<dim>       &p,
+                          const CellLocator<dim> *wedges) const
   {
     const Mapping<dim> &mapping = dofs.get_mapping();
     const auto         &shape   = dofs.reference_cell();
@@ -55,23 +62,9 @@ namespace amfrac
           {}
         return {dofs.copy_handler().end(), Point<dim>()};
       }
-    // deal.II 9.4's search tests the unit cube, which is wrong for a wedge
-    // (inside_reference_cell()): the cells are searched here, once per
-    // probe at setup, and the first one that contains the point (up to
-    // round-off) is taken.
-    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
-      {
-        if (cell->center().distance(p) > cell->diameter())
-          continue;
-        try
-          {
-            const Point<dim> unit = real_to_unit<dim>(mapping, cell, p);
-            if (inside_reference_cell(shape, unit, 1e-10))
-              return {cell, project_to_reference_cell(shape, unit)};
-          }
-        catch (const typename Mapping<dim>::ExcTransformationFailed &)
-          {}
-      }
+    const auto found = wedges->locate(p);
+    if (found.inside)
+      return {found.cell, found.unit};
     return {dofs.copy_handler().end(), Point<dim>()};
   }
 

@@ -42,6 +42,11 @@ namespace amfrac
     Location
     locate(const Point<dim> &p, const types::material_id ply) const;
 
+    /** The first cell of any ply (in the order of the material ids) that
+     * contains @p p; Location::inside is false if none does. */
+    Location
+    locate(const Point<dim> &p) const;
+
   private:
     using Box = BoundingBox<dim>;
     const TiedCopyDoFs<dim>                                          &dofs;

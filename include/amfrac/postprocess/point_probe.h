@@ -1,5 +1,6 @@
 #pragma once
 
+#include <amfrac/adaptivity/mesh_transfer.h>
 #include <amfrac/dofs/tied_copy_dofs.h>
 #include <amfrac/material/ply_table.h>
 #include <deal.II/base/point.h>
@@ -31,9 +32,10 @@ namespace amfrac
 
   private:
     /** The cell around @p p and the point's (projected) reference
-     * coordinates in it; an end iterator if no cell contains @p p. */
+     * coordinates in it; an end iterator if no cell contains @p p.
+     * @p wedges searches a wedge mesh (null on hypercubes). */
     std::pair<typename TiedCopyDoFs<dim>::CellIterator, Point<dim>>
-    locate(const Point<dim> &p) const;
+    locate(const Point<dim> &p, const CellLocator<dim> *wedges) const;
 
     const TiedCopyDoFs<dim>                              &dofs;
     const std::vector<PlyProperties<dim>>                &plies;
