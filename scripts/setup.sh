@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 # libopenblas0-serial replaces the reference BLAS behind MUMPS and UMFPACK
 # (measured: 4.6x faster factorization on the Pagano scene).
 # python3 runs the input fuzzer of the test suite.
-packages="libdeal.ii-dev zlib1g-dev openmpi-bin cmake make g++ numdiff libopenblas0-serial python3"
+packages="libdeal.ii-dev libgmsh-dev zlib1g-dev openmpi-bin cmake make g++ numdiff libopenblas0-serial python3"
 missing=""
 for p in $packages; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

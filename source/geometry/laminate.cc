@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <amfrac/geometry/in_plane_refinement.h>
 #include <amfrac/geometry/laminate.h>
+#include <amfrac/geometry/plane_mesh.h>
 #include <amfrac/parameters/expressions.h>
 #include <amfrac/parameters/input_error.h>
 #include <cmath>
@@ -185,6 +186,74 @@ namespace amfrac
           colorize_box_faces(box, triangulation);
         }
     }
+    /** Thickness coordinates of the element layers: Elements per ply
+     * equal layers in every ply. */
+    std::vector<double>
+    layer_coordinates(const parameters::Geometry &geometry,
+                      const Laminate             &laminate)
+    {
+      std::vector<double> z{0.};
+      for (unsigned int p = 0; p < laminate.n_plies(); ++p)
+        for (unsigned int k = 1; k <= geometry.elements_per_ply; ++k)
+          z.push_back(
+            laminate.ply_boundaries[p]
+            + (laminate.ply_boundaries[p + 1] - laminate.ply_boundaries[p]) * k
+                / geometry.elements_per_ply);
+      return z;
+    }
+
+
+    /** The laminate of a Gmsh in-plane mesh (Geometry/Mesh file, or an
+     * open hole on prisms), extruded through the element layers. */
+    template <int dim>
+    void
+    make_gmsh_laminate(const parameters::Geometry &geometry,
+                       const Laminate             &laminate,
+                       Triangulation<dim>         &triangulation)
+    {
+      if constexpr (dim != 3)
+        {
+          (void)laminate;
+          (void)triangulation;
+          throw InputError(geometry.mesh_file.empty() ?
+                             "Geometry/Element shape" :
+                             "Geometry/Mesh file",
+                           "a Gmsh mesh is extruded: it needs Dimension = 3");
+        }
+      else
+        {
+          const PlaneMesh plane = make_plane_mesh_on_root(
+            [&]() {
+              if (geometry.mesh_file.empty())
+                return mesh_open_hole_plane(geometry.length,
+                                            geometry.width,
+                                            geometry.hole_radius,
+                                            open_hole_element_size(geometry));
+              return read_plane_mesh(geometry.mesh_file,
+                                     std::pow(0.5, geometry.global_refinements),
+                                     geometry.global_refinements);
+            },
+            triangulation.get_communicator());
+          const bool mixed
+            = !plane.triangles.empty() && !plane.quadrilaterals.empty();
+          if (!mixed && geometry.prisms && !plane.quadrilaterals.empty())
+            throw InputError("Geometry/Element shape",
+                             "prism needs a mesh of triangles, and '"
+                               + geometry.mesh_file
+                               + "' has quadrilaterals (set Element shape = "
+                                 "hexahedron)");
+          if (!mixed && !geometry.prisms && !plane.triangles.empty())
+            throw InputError("Geometry/Element shape",
+                             "hexahedron needs a mesh of quadrilaterals, and "
+                             "'"
+                               + geometry.mesh_file
+                               + "' has triangles (set Element shape = prism, "
+                                 "or recombine the mesh in Gmsh)");
+          extrude_plane_mesh(plane,
+                             layer_coordinates(geometry, laminate),
+                             triangulation);
+        }
+    }
   } // namespace
 
 
@@ -221,7 +290,11 @@ namespace amfrac
       box[1] = geometry.width;
     if (!in_plane)
       box[dim - 1] = laminate.thickness();
-    if (geometry.hole_radius > 0)
+    const bool from_gmsh = !geometry.mesh_file.empty()
+                           || (geometry.prisms && geometry.hole_radius > 0);
+    if (from_gmsh)
+      make_gmsh_laminate(geometry, laminate, triangulation);
+    else if (geometry.hole_radius > 0)
       make_open_hole_mesh(geometry, laminate, triangulation);
     else if (geometry.prisms)
       {
@@ -248,7 +321,8 @@ namespace amfrac
             std::min<unsigned int>(upper - laminate.ply_boundaries.begin() - 1,
                                    laminate.n_plies() - 1));
       }
-    if (!geometry.prisms)
+    // Wedges cannot be refined, and Gmsh meshes are refined by Gmsh.
+    if (!geometry.prisms && !from_gmsh)
       triangulation.refine_global(geometry.global_refinements);
 
     if (geometry.mesh_distortion > 0)
@@ -314,22 +388,6 @@ namespace amfrac
 
   namespace
   {
-    /** Thickness coordinates of the element layers: Elements per ply
-     * equal layers in every ply. */
-    std::vector<double>
-    layer_coordinates(const parameters::Geometry &geometry,
-                      const Laminate             &laminate)
-    {
-      std::vector<double> z{0.};
-      for (unsigned int p = 0; p < laminate.n_plies(); ++p)
-        for (unsigned int k = 1; k <= geometry.elements_per_ply; ++k)
-          z.push_back(
-            laminate.ply_boundaries[p]
-            + (laminate.ply_boundaries[p + 1] - laminate.ply_boundaries[p]) * k
-                / geometry.elements_per_ply);
-      return z;
-    }
-
     /** The in-plane mesh of an open-hole plate: deal.II's plate with a
      * hole (whose inner square has 2 cells across), refined on its
      * manifolds until about Elements along width cells span the width,

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -93,8 +94,10 @@ namespace amfrac
         "linear static scenes (with Refinement cycles = 0) and explicit "
         "runs with Finite element degree = 1, with VTU output, without "
         "cohesive interfaces, crack insertion, contact, an impactor, a "
-        "patch load, buckling, total Lagrangian kinematics, a hole or a "
-        "Refinement region so far.");
+        "patch load, buckling, total Lagrangian kinematics or a "
+        "Refinement region so far. With a Hole radius the in-plane mesh "
+        "is Gmsh's (unstructured triangles, see Elements around hole); a "
+        "Mesh file brings its own.");
       prm.declare_entry("2D model",
                         "cross-section",
                         Patterns::Selection("cross-section|in-plane"),
@@ -125,6 +128,32 @@ namespace amfrac
         "refined until about Elements along width cells "
         "span the width; Elements along length is not used. "
         "The hole's boundary id is 6 (traction free).");
+      prm.declare_entry(
+        "Elements around hole",
+        "32",
+        Patterns::Integer(4),
+        "Element shape = prism with a Hole radius: the in-plane mesh is "
+        "made by Gmsh (unstructured triangles) with this many elements "
+        "around the hole, growing linearly away from it (by a quarter of "
+        "the distance) to Width / Elements along width; Global "
+        "refinements halve both sizes.");
+      prm.declare_entry(
+        "Mesh file",
+        "",
+        Patterns::Anything(),
+        "A 2D Gmsh file of the laminate's in-plane outline in the plane z "
+        "= 0 (3D only), relative to the parameter file's folder: a .geo "
+        "(meshed by Gmsh with its own sizes, halved per Global "
+        "refinement) or a .msh (taken as it is, each Global refinement "
+        "splits every element into four). Its triangles are extruded "
+        "through the element layers of the plies into wedges (Element "
+        "shape = prism), its quadrilaterals into hexahedra (Element shape "
+        "= hexahedron); a mesh of both is refused. Physical curves named "
+        "x-, x+, y-, y+ are the faces of those names in Boundary "
+        "conditions, the bottom and top of the laminate are z- and z+; "
+        "every other curve (a hole, a notch) is traction free (boundary "
+        "id 6). Length, Width and Elements along length/width are not "
+        "used.");
       prm.declare_entry("Refinement region",
                         "",
                         Patterns::Anything(),
@@ -192,6 +221,8 @@ namespace amfrac
       mesh_distortion        = prm.get_double("Mesh distortion");
       prisms                 = prm.get("Element shape") == "prism";
       hole_radius            = prm.get_double("Hole radius");
+      elements_around_hole   = prm.get_integer("Elements around hole");
+      mesh_file              = Utilities::trim(prm.get("Mesh file"));
       in_plane               = prm.get("2D model") == "in-plane";
       refinement_region      = Utilities::trim(prm.get("Refinement region"));
       region_refinements     = prm.get_integer("Region refinements");
@@ -1544,6 +1575,7 @@ namespace amfrac
       contact.parse_parameters(prm, geometry.plies.size());
       check_contact_input();
       check_prism_input();
+      check_mesh_file_input();
     }
 
 
@@ -1561,7 +1593,6 @@ namespace amfrac
       };
       refuse(dimension != 3,
              "Dimension = 2 (prisms are the 3D extrusion of triangles)");
-      refuse(geometry.hole_radius > 0, "Geometry/Hole radius > 0");
       refuse(!geometry.refinement_region.empty(),
              "a Geometry/Refinement region (deal.II cannot refine wedges)");
       refuse(adaptivity.active(),
@@ -1587,6 +1618,29 @@ namespace amfrac
              "quadrilateral faces)");
       refuse(time.explicit_dynamics && time.mass_scaling_step > 0,
              "Time/Mass scaling time step > 0");
+    }
+
+
+
+    void
+    Parameters::check_mesh_file_input() const
+    {
+      if (geometry.mesh_file.empty())
+        return;
+      const std::string name = "Geometry/Mesh file";
+      const auto refuse = [&](const bool condition, const std::string &what) {
+        if (condition)
+          throw InputError(name, "cannot be combined with " + what);
+      };
+      refuse(dimension != 3,
+             "Dimension = 2 (the file's outline is extruded through the "
+             "plies)");
+      refuse(geometry.hole_radius > 0,
+             "a Geometry/Hole radius (a hole belongs in the mesh file)");
+      refuse(geometry.mesh_distortion > 0,
+             "a Geometry/Mesh distortion (it is for the box mesh)");
+      refuse(!boundary_conditions.patch.face.empty(),
+             "a Boundary conditions/Patch load (it is placed on the box)");
     }
 
 
@@ -2125,8 +2179,21 @@ namespace amfrac
     {
       if (!std::ifstream(filename))
         throw InputError("cannot open parameter file '" + filename + "'");
-      return read_parameters(
-        [&](ParameterHandler &prm) { prm.parse_input(filename); });
+      return read_parameters([&](ParameterHandler &prm) {
+        prm.parse_input(filename);
+        // A mesh file is found next to the parameter file, wherever the
+        // run starts (and a checkpoint keeps the absolute path).
+        prm.enter_subsection("Geometry");
+        const std::filesystem::path mesh
+          = Utilities::trim(prm.get("Mesh file"));
+        if (!mesh.empty() && mesh.is_relative())
+          prm.set("Mesh file",
+                  std::filesystem::absolute(
+                    std::filesystem::path(filename).parent_path() / mesh)
+                    .lexically_normal()
+                    .string());
+        prm.leave_subsection();
+      });
     }
 
 

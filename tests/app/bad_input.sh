@@ -511,6 +511,44 @@ $explicit
 subsection Discretization
   set Finite element degree = 2
 end"
+# Gmsh in-plane meshes (Geometry/Mesh file, relative to the .prm's folder).
+mesh() { printf 'subsection Geometry\n  set Mesh file = %s\n%s\nend' "$1" "${2:-}"; }
+printf 'Point(1) = {0, 0, 0, 1}\n' > syntax.geo
+printf 'Point(1) = {0, 0, 0, 1};\nPoint(2) = {1, 0, 0, 1};\nLine(1) = {1, 2};\n' > curve.geo
+square='Point(1) = {0, 0, 0, 0.4}; Point(2) = {1, 0, 0, 0.4};
+Point(3) = {1, 1, 0, 0.4}; Point(4) = {0, 1, 0, 0.4};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};'
+printf '%s\n' "$square" > square.geo
+printf '%s\nRecombine Surface {1};\n' "$square" > square_quads.geo
+printf '%s\nPoint(5) = {2, 0, 0, 0.4}; Point(6) = {2, 1, 0, 0.4};
+Line(5) = {2, 5}; Line(6) = {5, 6}; Line(7) = {6, 3};
+Curve Loop(2) = {5, 6, 7, -2}; Plane Surface(2) = {2};
+Recombine Surface {2};\n' "$square" > mixed.geo
+printf 'Point(1) = {0, 0, 0, 1}; Point(2) = {1, 0, 1, 1}; Point(3) = {0, 1, 0, 1};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 1};
+Curve Loop(1) = {1, 2, 3}; Surface(1) = {1};\n' > tilted.geo
+echo "not a mesh" > square.txt
+expect mesh_file_missing "cannot open" "$base
+$(mesh nothere.geo)"
+expect mesh_file_extension "neither a .geo nor a .msh" "$base
+$(mesh square.txt)"
+expect mesh_file_syntax "Gmsh failed" "$base
+$(mesh syntax.geo)"
+expect mesh_file_no_surface "has no 2D elements" "$base
+$(mesh curve.geo)"
+expect mesh_file_not_plane "is not in the plane z = 0" "$base
+$(mesh tilted.geo)"
+expect mesh_file_triangles_on_hexahedra "hexahedron needs a mesh of quadrilaterals" "$base
+$(mesh square.geo)"
+expect mesh_file_quads_on_prisms "prism needs a mesh of triangles" "$base
+$(mesh square_quads.geo '  set Element shape = prism')"
+expect mesh_file_mixed "mixed prism/hexahedron meshes" "$base
+$(mesh mixed.geo '  set Element shape = prism')"
+expect mesh_file_2d "Geometry/Mesh file" "$(with 'set Dimension = 3' 'set Dimension = 2')
+$(mesh square.geo)"
+expect mesh_file_hole "a hole belongs in the mesh file" "$base
+$(mesh square.geo '  set Hole radius = 0.1')"
 expect contact_penalty "Contact/Penalty" "$base
 $explicit
 $contact

@@ -181,24 +181,33 @@ end
    * traction free) and compare. */
   template <int dim, typename Field>
   void
-  check_patch(const std::string &degree, const bool prisms = false)
+  check_patch(const std::string &degree,
+              const bool         prisms    = false,
+              const std::string &mesh_file = "")
   {
     using amfrac_test::substitute;
-    const std::string region = prisms ?
+    const std::string region = prisms || !mesh_file.empty() ?
                                  "" :
                                  "  set Refinement region     = x < 1.5\n"
                                  "  set Region refinements    = 1";
-    const auto        prm    = parameters::Parameters::from_string(substitute(
+    std::string       text   = substitute(
       substitute(substitute(substitute(scene, "@DIM@", std::to_string(dim)),
                             "@DEGREE@",
                             degree),
                  "@SHAPE@",
                  prisms ? "prism" : "hexahedron"),
       "@REGION@",
-      region));
-    const Laminate    laminate(prm.geometry, prm.materials);
-    const auto        plies = make_ply_table<dim>(laminate, prm.materials);
-    auto              exact = std::make_shared<Field>(laminate, plies);
+      region);
+    // A Gmsh outline instead of the distorted box (and once refined).
+    if (!mesh_file.empty())
+      text = substitute(text,
+                        "set Mesh distortion       = 0.25",
+                        "set Mesh file = " + mesh_file
+                          + "\n  set Global refinements = 1");
+    const auto     prm = parameters::Parameters::from_string(text);
+    const Laminate laminate(prm.geometry, prm.materials);
+    const auto     plies = make_ply_table<dim>(laminate, prm.materials);
+    auto           exact = std::make_shared<Field>(laminate, plies);
 
     Simulator<dim>                           simulator(prm, MPI_COMM_WORLD);
     std::vector<PrescribedDisplacement<dim>> supports;
@@ -215,9 +224,13 @@ end
     const double norm  = simulator.compute_error(zero, VectorTools::L2_norm);
     const double h1 = simulator.compute_error(*exact, VectorTools::H1_seminorm);
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      std::cout << dim << "D " << (prisms ? "prism P" : "Q") << degree
-                << ": relative L2 error " << error / norm
-                << ", H1 seminorm error " << h1 << std::endl;
+      std::cout
+        << dim << "D " << (prisms ? "prism P" : "Q") << degree
+        << (mesh_file.empty() ? "" : " on " + mesh_file) << ", "
+        << simulator.dofs().copy_handler().get_triangulation().n_active_cells()
+        << " cells"
+        << ": relative L2 error " << error / norm << ", H1 seminorm error "
+        << h1 << std::endl;
     CHECK(error / norm < 1e-10);
     CHECK(h1 < 1e-10);
     CHECK(norm > 1e-4); // the field is not trivially zero
@@ -232,11 +245,22 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  // argv[1]: the folder of the Gmsh meshes (tests/app/meshes).
+  const std::string meshes = argc > 1 ? std::string(argv[1]) + "/" : "";
   for (const std::string degree : {"1", "2"})
     {
       check_patch<3, LaminatePatchField>(degree);
       check_patch<3, LaminatePatchField>(degree, /*prisms=*/true);
       check_patch<2, PlaneStrainPatchField>(degree);
+      if (!meshes.empty())
+        {
+          // Unstructured triangles of a disk (.geo) as wedges, and the
+          // quadrilaterals of a trapezoid (.msh) as hexahedra.
+          check_patch<3, LaminatePatchField>(degree, true, meshes + "disk.geo");
+          check_patch<3, LaminatePatchField>(degree,
+                                             false,
+                                             meshes + "trapezoid_quads.msh");
+        }
     }
   return amfrac_test::summary();
 }

@@ -50,7 +50,12 @@ namespace amfrac
       bool in_plane = false;
       /** A through-thickness hole at the plate centre (0: none; 3D, or 2D
        * in-plane). */
-      double       hole_radius;
+      double hole_radius;
+      /** Prisms with a hole: the Gmsh mesh's elements around it. */
+      unsigned int elements_around_hole = 32;
+      /** A 2D Gmsh .geo or .msh of the in-plane outline, extruded ply by
+       * ply (empty: the box); an absolute path once parsed from a file. */
+      std::string  mesh_file;
       std::string  refinement_region;
       unsigned int region_refinements;
       /** A displacement of the mesh's vertices (dim expressions of x, y,
@@ -504,6 +509,9 @@ namespace amfrac
        * (InputError). */
       void
       check_prism_input() const;
+      /** Refuse what a Geometry/Mesh file cannot be combined with. */
+      void
+      check_mesh_file_input() const;
     };
 
     /** Split "a; b; c" into trimmed expressions. */
