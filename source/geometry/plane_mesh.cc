@@ -303,6 +303,17 @@ namespace amfrac
         {
           error = e.what();
         }
+      // Anything else Gmsh throws must not leave the other ranks waiting
+      // in the broadcast.
+      catch (const std::exception &e)
+        {
+          error
+            = std::string("meshing the laminate's plane failed: ") + e.what();
+        }
+      catch (...)
+        {
+          error = "meshing the laminate's plane failed in Gmsh";
+        }
     error = Utilities::MPI::broadcast(comm, error, 0);
     if (!error.empty())
       throw InputError(error);
