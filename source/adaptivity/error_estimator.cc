@@ -156,15 +156,18 @@ namespace amfrac
       std::vector<std::vector<SymmetricTensor<2, dim>>> stress;
       std::vector<std::vector<Point<dim>>>              points;
     };
-    const QGauss<1>     through(fe.degree + 1);
+    // On wedges the in-plane points are the triangle's Gauss points of
+    // the same order (its centroid for P1).
     const auto          flags   = update_gradients | update_quadrature_points;
     const Mapping<dim> &mapping = dofs.get_mapping();
     Samples             superconvergent{
-      FEValues<dim>(mapping, fe, QGauss<dim>(fe.degree), flags), {}, {}};
+      FEValues<dim>(mapping, fe, dofs.cell_quadrature(fe.degree), flags),
+      {},
+      {}};
     Samples thickness{FEValues<dim>(mapping,
                                     fe,
-                                    Quadrature<dim>(QGauss<dim - 1>(fe.degree),
-                                                    through),
+                                    dofs.cell_quadrature(fe.degree,
+                                                         fe.degree + 1),
                                     flags),
                       {},
                       {}};
@@ -324,7 +327,7 @@ namespace amfrac
     const auto &triangulation = dofs.copy_handler().get_triangulation();
     const auto &fe            = dofs.get_fe();
     // Continuous inside a ply, free across plies and released faces.
-    TiedCopyDoFs<dim> recovery(triangulation, fe.degree);
+    TiedCopyDoFs<dim> recovery(triangulation, fe.degree, dofs.reference_cell());
     recovery.distribute([this](const auto &cell, const unsigned int f) {
       return !cell->at_boundary(f)
              && (cell->neighbor(f)->material_id() != cell->material_id()
@@ -337,7 +340,7 @@ namespace amfrac
     const unsigned int n_nodes = fe.base_element(0).n_dofs_per_cell();
     FEValues<dim>      values(dofs.get_mapping(),
                          fe,
-                         QGauss<dim>(fe.degree + 1),
+                         dofs.cell_quadrature(fe.degree + 1),
                          update_values | update_gradients | update_JxW_values);
     std::vector<SymmetricTensor<2, dim>> stress;
     std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
@@ -379,6 +382,11 @@ namespace amfrac
   ErrorEstimator<dim>::kelly(const dealii::Vector<double> &u,
                              const Boundary               &boundary) const
   {
+    // Parameters::check_prism_input() refuses it: the face rules below
+    // are for the quadrilateral faces of hypercubes.
+    AssertThrow(dofs.reference_cell().is_hyper_cube(),
+                ExcMessage("the Kelly estimator is for hexahedral and "
+                           "quadrilateral meshes"));
     const auto       &fe    = dofs.get_fe();
     const UpdateFlags flags = update_gradients | update_normal_vectors
                               | update_JxW_values | update_quadrature_points;
@@ -507,7 +515,7 @@ namespace amfrac
     const auto                          &fe = dofs.get_fe();
     FEValues<dim>                        values(dofs.get_mapping(),
                          fe,
-                         QGauss<dim>(fe.degree + 2),
+                         dofs.cell_quadrature(fe.degree + 2),
                          update_gradients | update_JxW_values
                            | update_quadrature_points);
     std::vector<SymmetricTensor<2, dim>> stress;

@@ -140,28 +140,58 @@ namespace amfrac
   NonMatchingTransfer<dim>::nodal(const Vector<double> &old_copies) const
   {
     const auto &old_fe = old_dofs.get_fe(), &new_fe = new_dofs.get_fe();
+    const auto &old_base = old_fe.base_element(0);
+    const auto &new_base = new_fe.base_element(0);
     std::vector<types::global_dof_index> old_indices(old_fe.n_dofs_per_cell()),
       new_indices(new_fe.n_dofs_per_cell());
     Vector<double> copies(new_dofs.n_copies());
     outside = 0;
+    // A node is located once for all its components, and a vertex once for
+    // all the cells of its ply around it (a vertex of an extruded mesh has
+    // a dozen).
+    using Location = typename CellLocator<dim>::Location;
+    std::map<std::pair<unsigned int, types::material_id>, Location> at_vertex;
+    const auto locate = [&](const auto &cell, const Point<dim> &p) {
+      for (const unsigned int v : cell->vertex_indices())
+        if (p.distance(cell->vertex(v)) < 1e-12 * cell->diameter())
+          {
+            const auto key
+              = std::make_pair(cell->vertex_index(v), cell->material_id());
+            const auto known = at_vertex.find(key);
+            if (known != at_vertex.end())
+              return known->second;
+            const Location found = old_cells.locate(p, cell->material_id());
+            outside += found.inside ? 0 : 1;
+            return at_vertex.emplace(key, found).first->second;
+          }
+      const Location found = old_cells.locate(p, cell->material_id());
+      outside += found.inside ? 0 : 1;
+      return found;
+    };
+    std::vector<double> phi(old_base.n_dofs_per_cell());
     for (const auto &cell : new_dofs.copy_handler().active_cell_iterators())
       {
         cell->get_dof_indices(new_indices);
-        for (unsigned int i = 0; i < new_indices.size(); ++i)
+        for (unsigned int k = 0; k < new_base.n_dofs_per_cell(); ++k)
           {
             const Point<dim> p
               = new_dofs.get_linear_mapping().transform_unit_to_real_cell(
-                cell, new_fe.unit_support_point(i));
-            const unsigned int c = new_fe.system_to_component_index(i).first;
-            const auto         found = old_cells.locate(p, cell->material_id());
-            outside += found.inside ? 0 : 1;
+                cell, new_base.unit_support_point(k));
+            const Location found = locate(cell, p);
             found.cell->get_dof_indices(old_indices);
-            double value = 0;
-            for (unsigned int j = 0; j < old_indices.size(); ++j)
-              if (old_fe.system_to_component_index(j).first == c)
-                value += old_fe.shape_value(j, found.unit)
-                         * old_copies[old_indices[j]];
-            copies[new_indices[i]] = value;
+            for (unsigned int m = 0; m < phi.size(); ++m)
+              phi[m] = old_base.shape_value(m, found.unit);
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                double value = 0;
+                for (unsigned int m = 0; m < phi.size(); ++m)
+                  value
+                    += phi[m]
+                       * old_copies
+                         [old_indices[old_fe.component_to_system_index(c, m)]];
+                copies[new_indices[new_fe.component_to_system_index(c, k)]]
+                  = value;
+              }
           }
       }
     return copies;

@@ -89,19 +89,27 @@ namespace amfrac
   namespace
   {
     /** Gauss on hypercubes, Witherden-Vincent (symmetric, positive
-     * weights) on triangles, their product on wedges. */
+     * weights) on triangles, their product on wedges; @p n_through points
+     * along the last axis (the thickness) of a 3D cell. */
     template <int dim>
     Quadrature<dim>
-    gauss_rule(const ReferenceCell &shape, const unsigned int n)
+    gauss_rule(const ReferenceCell &shape,
+               const unsigned int   n,
+               const unsigned int   n_through)
     {
       if (shape.is_hyper_cube())
-        return QGauss<dim>(n);
+        {
+          if constexpr (dim > 1)
+            if (n_through != n)
+              return Quadrature<dim>(QGauss<dim - 1>(n), QGauss<1>(n_through));
+          return QGauss<dim>(n);
+        }
       if (shape.is_simplex())
         return QWitherdenVincentSimplex<dim>(n);
       AssertThrow(dim == 3 && shape == ReferenceCells::Wedge,
                   ExcNotImplemented());
       const QWitherdenVincentSimplex<2> triangle(n);
-      const QGauss<1>                   line(n);
+      const QGauss<1>                   line(n_through);
       std::vector<Point<dim>>           points;
       std::vector<double>               weights;
       for (unsigned int k = 0; k < line.size(); ++k)
@@ -124,7 +132,17 @@ namespace amfrac
   Quadrature<dim>
   TiedCopyDoFs<dim>::cell_quadrature(const unsigned int n_points_1d) const
   {
-    return gauss_rule<dim>(shape, n_points_1d);
+    return gauss_rule<dim>(shape, n_points_1d, n_points_1d);
+  }
+
+
+
+  template <int dim>
+  Quadrature<dim>
+  TiedCopyDoFs<dim>::cell_quadrature(const unsigned int n_points_1d,
+                                     const unsigned int n_points_through) const
+  {
+    return gauss_rule<dim>(shape, n_points_1d, n_points_through);
   }
 
 
@@ -138,8 +156,9 @@ namespace amfrac
       return hp::QCollection<dim - 1>(QGauss<dim - 1>(n_points_1d));
     hp::QCollection<dim - 1> rules;
     for (unsigned int f = 0; f < shape.n_faces(); ++f)
-      rules.push_back(
-        gauss_rule<dim - 1>(shape.face_reference_cell(f), n_points_1d));
+      rules.push_back(gauss_rule<dim - 1>(shape.face_reference_cell(f),
+                                          n_points_1d,
+                                          n_points_1d));
     return rules;
   }
 

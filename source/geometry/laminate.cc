@@ -209,12 +209,14 @@ namespace amfrac
     void
     make_gmsh_laminate(const parameters::Geometry &geometry,
                        const Laminate             &laminate,
-                       Triangulation<dim>         &triangulation)
+                       Triangulation<dim>         &triangulation,
+                       const InPlaneSize          &in_plane_size)
     {
       if constexpr (dim != 3)
         {
           (void)laminate;
           (void)triangulation;
+          (void)in_plane_size;
           throw InputError(geometry.mesh_file.empty() ?
                              "Geometry/Element shape" :
                              "Geometry/Mesh file",
@@ -228,7 +230,11 @@ namespace amfrac
                 return mesh_open_hole_plane(geometry.length,
                                             geometry.width,
                                             geometry.hole_radius,
-                                            open_hole_element_size(geometry));
+                                            in_plane_size ?
+                                              in_plane_size :
+                                              open_hole_element_size(geometry));
+              if (in_plane_size)
+                return read_plane_mesh(geometry.mesh_file, in_plane_size);
               return read_plane_mesh(geometry.mesh_file,
                                      std::pow(0.5, geometry.global_refinements),
                                      geometry.global_refinements);
@@ -263,7 +269,8 @@ namespace amfrac
   make_laminate_mesh(const parameters::Geometry &geometry,
                      const Laminate             &laminate,
                      Triangulation<dim>         &triangulation,
-                     const bool                  region_along_plies)
+                     const bool                  region_along_plies,
+                     const InPlaneSize          &in_plane_size)
   {
     // A 2D in-plane model meshes the laminate's (x, y) plane with one
     // (homogenized) material; otherwise the last axis is the thickness
@@ -290,10 +297,11 @@ namespace amfrac
       box[1] = geometry.width;
     if (!in_plane)
       box[dim - 1] = laminate.thickness();
-    const bool from_gmsh = !geometry.mesh_file.empty()
-                           || (geometry.prisms && geometry.hole_radius > 0);
+    const bool from_gmsh
+      = !geometry.mesh_file.empty()
+        || (geometry.prisms && (geometry.hole_radius > 0 || in_plane_size));
     if (from_gmsh)
-      make_gmsh_laminate(geometry, laminate, triangulation);
+      make_gmsh_laminate(geometry, laminate, triangulation, in_plane_size);
     else if (geometry.hole_radius > 0)
       make_open_hole_mesh(geometry, laminate, triangulation);
     else if (geometry.prisms)
@@ -510,10 +518,12 @@ namespace amfrac
   make_laminate_mesh<2>(const parameters::Geometry &,
                         const Laminate &,
                         Triangulation<2> &,
-                        const bool);
+                        const bool,
+                        const InPlaneSize &);
   template void
   make_laminate_mesh<3>(const parameters::Geometry &,
                         const Laminate &,
                         Triangulation<3> &,
-                        const bool);
+                        const bool,
+                        const InPlaneSize &);
 } // namespace amfrac

@@ -176,6 +176,25 @@ namespace amfrac
 
 
 
+  namespace
+  {
+    /** Make @p size the only element size of the next Gmsh mesh (not the
+     * geometry's points, curvature or boundary). */
+    void
+    use_size_field(const std::function<double(const Point<2> &)> &size)
+    {
+      gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+      gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+      gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+      gmsh::model::mesh::setSizeCallback(
+        [size](int, int, double x, double y, double) {
+          return size(Point<2>(x, y));
+        });
+    }
+  } // namespace
+
+
+
   PlaneMesh
   read_plane_mesh(const std::string &file,
                   const double       size_factor,
@@ -218,6 +237,37 @@ namespace amfrac
 
 
   PlaneMesh
+  read_plane_mesh(const std::string                             &file,
+                  const std::function<double(const Point<2> &)> &size)
+  {
+    if (!std::ifstream(file))
+      throw InputError(mesh_file, "cannot open '" + file + "'");
+    GmshSession session;
+    try
+      {
+        gmsh::open(file);
+        GmshSession::check(mesh_file, "to read '" + file + "'");
+        // The file may have meshed itself on opening (a Mesh command).
+        gmsh::model::mesh::clear();
+        use_size_field(size);
+        gmsh::model::mesh::generate(2);
+        GmshSession::check(mesh_file, "to remesh '" + file + "'");
+      }
+    catch (const InputError &)
+      {
+        throw;
+      }
+    catch (...)
+      {
+        GmshSession::check(mesh_file, "on '" + file + "'");
+        throw InputError(mesh_file, "Gmsh failed to remesh '" + file + "'");
+      }
+    return collect_plane_mesh(mesh_file);
+  }
+
+
+
+  PlaneMesh
   mesh_open_hole_plane(const double                                   length,
                        const double                                   width,
                        const double                                   radius,
@@ -227,11 +277,14 @@ namespace amfrac
     GmshSession       session;
     gmsh::model::add("open hole");
     const int plate = gmsh::model::occ::addRectangle(0, 0, 0, length, width);
-    const int hole
-      = gmsh::model::occ::addDisk(0.5 * length, 0.5 * width, 0, radius, radius);
-    gmsh::vectorpair              cut;
-    std::vector<gmsh::vectorpair> map;
-    gmsh::model::occ::cut({{2, plate}}, {{2, hole}}, cut, map);
+    if (radius > 0)
+      {
+        const int hole = gmsh::model::occ::addDisk(
+          0.5 * length, 0.5 * width, 0, radius, radius);
+        gmsh::vectorpair              cut;
+        std::vector<gmsh::vectorpair> map;
+        gmsh::model::occ::cut({{2, plate}}, {{2, hole}}, cut, map);
+      }
     gmsh::model::occ::synchronize();
 
     // Name the curves by where their bounding boxes lie.
@@ -257,13 +310,7 @@ namespace amfrac
                                    gmsh::model::addPhysicalGroup(1, tags),
                                    names[id]);
 
-    gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
-    gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
-    gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
-    gmsh::model::mesh::setSizeCallback(
-      [&](int, int, double x, double y, double) {
-        return size(Point<2>(x, y));
-      });
+    use_size_field(size);
     gmsh::model::mesh::generate(2);
     GmshSession::check(parameter, "to mesh the open-hole plate");
     return collect_plane_mesh(parameter);
@@ -275,14 +322,15 @@ namespace amfrac
   open_hole_element_size(const parameters::Geometry &geometry)
   {
     const double scale = std::pow(0.5, geometry.global_refinements);
-    const double far   = scale * geometry.width / geometry.elements_along_width;
+    const double far   = geometry.width / geometry.elements_along_width;
     const double at_hole
-      = scale * 2 * M_PI * geometry.hole_radius / geometry.elements_around_hole;
+      = 2 * M_PI * geometry.hole_radius / geometry.elements_around_hole;
     const Point<2> centre(0.5 * geometry.length, 0.5 * geometry.width);
     const double   radius = geometry.hole_radius;
+    // The whole field is halved per refinement, its grading too.
     return [=](const Point<2> &p) {
       const double distance = std::max(0., p.distance(centre) - radius);
-      return std::min(far, at_hole + 0.25 * distance);
+      return scale * std::min(far, at_hole + 0.25 * distance);
     };
   }
 

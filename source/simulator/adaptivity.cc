@@ -93,6 +93,19 @@ namespace amfrac
          {"zz_error", last_zz.error},
          {"zz_relative_error", last_zz.relative()},
          {"energy_norm", last_zz.solution_norm}};
+    if (remeshes())
+      {
+        // The remeshing that made this cycle's mesh (zeros on the first).
+        const auto &event = last_remeshing;
+        row.insert(row.end(),
+                   {{"zz_relative_before_remeshing", event.zz_relative_before},
+                    {"predicted_cells", event.predicted_cells},
+                    {"smallest_size", event.smallest_size},
+                    {"remesh_seconds", event.mesh_seconds},
+                    {"transfer_seconds", event.transfer_seconds},
+                    {"transfer_energy_change", event.energy_change},
+                    {"transfer_points_outside", event.outside}});
+      }
     for (const auto &entry : last_row)
       if (entry.first != "step" && entry.first != "cycle")
         row.push_back(entry);
@@ -113,6 +126,8 @@ namespace amfrac
   bool
   Simulator<dim>::refine_mesh()
   {
+    if (remeshes())
+      return remesh();
     mark_by_estimate();
     if (!limit_flags())
       {

@@ -517,6 +517,11 @@ namespace amfrac
     relevant_solution.reinit(dof_layer.locally_owned_dofs(),
                              dof_layer.locally_relevant_dofs(),
                              comm);
+    // The solution carried from the last mesh (remeshing): an iterative
+    // solver starts from it.
+    if (first_guess.size() == dof_layer.n_dofs())
+      solution = first_guess;
+    first_guess.clear();
 
     const unsigned int n_steps = parameters.time.n_steps;
     const double       dt      = parameters.time.end_time / n_steps;

@@ -495,10 +495,27 @@ $prism
 subsection Geometry
   set Refinement region = x < 2
 end"
-expect prism_adaptivity "Geometry/Element shape" "$base
+expect prism_adaptivity_strategy "Adaptivity/Strategy = fixed fraction" "$base
 $prism
 subsection Adaptivity
   set Refinement cycles = 2
+end"
+expect prism_adaptivity_kelly "Adaptivity/Estimator = kelly" "$base
+$prism
+subsection Adaptivity
+  set Refinement cycles = 2
+  set Strategy = uniform
+  set Estimator = kelly
+end"
+expect prism_adaptivity_history "remeshing during a load history" "$base
+$prism
+$explicit
+subsection Adaptivity
+  set Refine every = 2
+end"
+expect adaptivity_max_cells "Maximum cells" "$base
+subsection Adaptivity
+  set Maximum cells = -3
 end"
 expect prism_xdmf "Geometry/Element shape" "$base
 $prism
@@ -549,6 +566,12 @@ expect mesh_file_2d "Geometry/Mesh file" "$(with 'set Dimension = 3' 'set Dimens
 $(mesh square.geo)"
 expect mesh_file_hole "a hole belongs in the mesh file" "$base
 $(mesh square.geo '  set Hole radius = 0.1')"
+expect prism_adaptivity_msh "cannot be remeshed: give the .geo" "$base
+$(mesh plate.msh '  set Element shape = prism')
+subsection Adaptivity
+  set Refinement cycles = 2
+  set Strategy = error target
+end"
 expect contact_penalty "Contact/Penalty" "$base
 $explicit
 $contact

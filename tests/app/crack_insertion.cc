@@ -14,18 +14,10 @@
 #include <sstream>
 
 using namespace amfrac;
+using amfrac_test::file_text;
 
 namespace
 {
-  std::string
-  file_text(const std::string &name)
-  {
-    std::ifstream     in(name);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
-
   /** The crack points of all ranks on the section x = 2 and elsewhere. */
   template <int dim>
   std::pair<unsigned long, unsigned long>

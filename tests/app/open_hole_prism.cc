@@ -51,10 +51,7 @@ main(int argc, char *argv[])
                    "open_hole_2d.prm open_hole_isotropic.prm\n";
       return 2;
     }
-  std::ifstream     material_file(argv[3]);
-  std::stringstream material;
-  material << material_file.rdbuf();
-  const std::string   isotropic = material.str() + settings;
+  const std::string   isotropic = amfrac_test::file_text(argv[3]) + settings;
   const Result        reference = run<2>(argv[2],
                                   isotropic
                                     + "subsection Adaptivity\n"

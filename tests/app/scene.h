@@ -18,6 +18,16 @@
 
 namespace amfrac_test
 {
+  /** The whole text of @p file (a .prm fragment to append). */
+  inline std::string
+  file_text(const std::string &file)
+  {
+    std::ifstream     in(file);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+
   inline amfrac::parameters::Parameters
   scene_with(const std::string &file, const std::string &appended)
   {

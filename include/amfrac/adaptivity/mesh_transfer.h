@@ -108,8 +108,9 @@ namespace amfrac
                const std::vector<Rule> &rules,
                const Quadrature<dim>   &new_points) const;
 
-    /** How many new copies and points lay outside the old mesh of their
-     * ply at the last call (extrapolated from the nearest cell). */
+    /** How many new nodes (a vertex once per ply) and points lay outside the
+     * old mesh of their ply at the last call (extrapolated from the nearest
+     * cell). */
     unsigned int
     n_outside() const
     {

@@ -105,6 +105,13 @@ namespace amfrac
     Quadrature<dim>
     cell_quadrature(const unsigned int n_points_1d) const;
 
+    /** The same with @p n_points_through points along the last axis (the
+     * laminate's thickness in 3D): the triangle (or QGauss<dim-1>) rule of
+     * @p n_points_1d times QGauss<1>(@p n_points_through). */
+    Quadrature<dim>
+    cell_quadrature(const unsigned int n_points_1d,
+                    const unsigned int n_points_through) const;
+
     /** The same rules on the faces, for FEFaceValues: one rule for the
      * faces of a hypercube, one per face in face order on a wedge (it has
      * triangles and quadrilaterals). */

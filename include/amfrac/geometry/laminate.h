@@ -3,7 +3,9 @@
 #include <amfrac/geometry/stacking_sequence.h>
 #include <amfrac/material/orthotropic.h>
 #include <amfrac/parameters/parameters.h>
+#include <deal.II/base/point.h>
 #include <deal.II/grid/tria.h>
+#include <functional>
 #include <vector>
 
 namespace amfrac
@@ -56,14 +58,21 @@ namespace amfrac
                       const Laminate             &laminate,
                       Triangulation<dim>         &triangulation);
 
+  /** The in-plane element size [mm] at a point of the (x, y) plane. */
+  using InPlaneSize = std::function<double(const Point<2> &)>;
+
   /** With @p region_along_plies (3D), the Refinement region is refined
    * in the plane of the plies only (keep_refinement_in_plane()), as runs
-   * that adapt during their load history refine. */
+   * that adapt during their load history refine. A prism laminate given
+   * @p in_plane_size is meshed by Gmsh with that size (its outline: the
+   * box, the open-hole plate or the .geo of Geometry/Mesh file), the
+   * global remeshing of an adaptive run. */
   template <int dim>
   void
   make_laminate_mesh(const parameters::Geometry &geometry,
                      const Laminate             &laminate,
                      Triangulation<dim>         &triangulation,
-                     const bool                  region_along_plies = false);
+                     const bool                  region_along_plies = false,
+                     const InPlaneSize          &in_plane_size      = {});
 
 } // namespace amfrac

@@ -56,11 +56,17 @@ namespace amfrac
                   const double       size_factor,
                   const unsigned int refinements);
 
+  /** A .geo @p file meshed with the element size @p size (mm at a point of
+   * the plane) instead of its own: the remeshing of a prism laminate. */
+  PlaneMesh
+  read_plane_mesh(const std::string                             &file,
+                  const std::function<double(const Point<2> &)> &size);
+
   /**
    * The in-plane mesh of an open-hole plate [0, L] x [0, W] with a hole
    * of radius R at its centre, made by Gmsh with the element size
    * @p size (mm at a point of the plane). The straight sides are x-, x+,
-   * y-, y+; the hole is id 6.
+   * y-, y+; the hole is id 6. With @p radius = 0, the rectangle.
    */
   PlaneMesh
   mesh_open_hole_plane(const double                                   length,

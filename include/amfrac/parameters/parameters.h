@@ -365,6 +365,10 @@ namespace amfrac
        * refines cells in 3D: bit a for axis a (x = 1, y = 2, both = 3).
        * In 2D only x, the one axis along the plies. */
       unsigned int process_zone_axes;
+      /** Global remeshing (prisms): the cell budget (0: none) and the
+       * smallest in-plane size [mm] (0: none). */
+      unsigned int max_cells;
+      double       min_element_size;
 
       bool
       active() const

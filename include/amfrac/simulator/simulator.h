@@ -318,6 +318,23 @@ namespace amfrac
      * none). */
     double lowest_load_factor = 0;
     Timer  clock;
+    /** Global remeshing (prisms): the last event, reported with the next
+     * cycle, and the solution carried to the new mesh (tau_2), the first
+     * guess of the next solve. */
+    struct RemeshingEvent
+    {
+      double zz_relative_before = 0;
+      double predicted_cells    = 0;
+      double smallest_size      = 0;
+      double mesh_seconds       = 0;
+      double transfer_seconds   = 0;
+      /** |E(tau_2 u) / E(u) - 1| for the energy norms E on the new and
+       * the old mesh. */
+      double       energy_change = 0;
+      unsigned int outside       = 0;
+    };
+    RemeshingEvent last_remeshing;
+    Vector         first_guess;
 
     /** Checkpoints: the store (nullptr for refinement cycles, which
      * cannot resume), the checkpoint being resumed from (nullptr on a
@@ -485,6 +502,17 @@ namespace amfrac
      * marked. */
     bool
     refine_mesh();
+    /** Prisms: regenerate the mesh with Gmsh from the size field of the
+     * ZZ error (RemeshingRule) and carry the solution to it; false if the
+     * cell budget is spent. */
+    bool
+    remesh();
+    /** Whether the mesh adapts by global remeshing (wedges). */
+    bool
+    remeshes() const
+    {
+      return !dof_layer.reference_cell().is_hyper_cube();
+    }
     /** Flags by the Adaptivity strategy from last_estimate. */
     void
     mark_by_estimate();

@@ -1,0 +1,153 @@
+#include <amfrac/adaptivity/mesh_transfer.h>
+#include <amfrac/adaptivity/remeshing.h>
+#include <amfrac/simulator/simulator.h>
+#include <deal.II/base/function.h>
+#include <stdexcept>
+
+namespace amfrac
+{
+  namespace
+  {
+    /** The copy values of @p from on the cells of @p to, a layer of the
+     * same element on a copy of the mesh (the same cells in the same
+     * order). */
+    template <int dim>
+    dealii::Vector<double>
+    copies_on(const TiedCopyDoFs<dim>      &from,
+              const dealii::Vector<double> &from_copies,
+              const TiedCopyDoFs<dim>      &to)
+    {
+      dealii::Vector<double> copies(to.copy_handler().n_dofs());
+      dealii::Vector<double> local(from.get_fe().n_dofs_per_cell());
+      auto                   other = to.copy_handler().begin_active();
+      for (const auto &cell : from.copy_handler().active_cell_iterators())
+        {
+          if (cell->center().distance(other->center())
+              > 1e-12 * cell->diameter())
+            throw std::logic_error("remeshing: the copy of the mesh has its "
+                                   "cells in another order");
+          cell->get_dof_values(from_copies, local);
+          other->set_dof_values(local, copies);
+          ++other;
+        }
+      return copies;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::remesh()
+  {
+    // The size field lives in the plane of a 3D laminate.
+    if constexpr (dim != 3)
+      throw std::logic_error("remeshing is for 3D prism meshes");
+    else
+      {
+        const auto    &adaptivity = parameters.adaptivity;
+        RemeshingEvent event;
+        event.zz_relative_before     = last_zz.relative();
+        const unsigned int old_cells = triangulation.n_active_cells();
+
+        // The size field: every cell's size by the seed's rule, or halved.
+        RemeshingRule rule;
+        rule.degree   = parameters.discretization.degree;
+        rule.min_size = adaptivity.min_element_size;
+        std::vector<double> sizes;
+        if (adaptivity.strategy == parameters::Adaptivity::Strategy::uniform)
+          for (const auto &cell : triangulation.active_cell_iterators())
+            sizes.push_back(0.5 * in_plane_size(cell));
+        else
+          {
+            // The same equal share as the refinement of hexahedra.
+            const double target = adaptivity.target_error;
+            const double share  = target * last_zz.solution_norm
+                                 / std::sqrt((1 - target * target) * old_cells);
+            sizes
+              = rule.new_sizes(triangulation, last_estimate.cell_errors, share);
+          }
+        InPlaneSizeField field(triangulation, sizes);
+        const double     layers = double(old_cells) / field.n_triangles();
+        event.predicted_cells   = layers * field.predicted_triangles();
+        if (adaptivity.max_cells > 0
+            && event.predicted_cells > adaptivity.max_cells)
+          {
+            if (old_cells >= 0.9 * adaptivity.max_cells)
+              {
+                pcout
+                  << "  the mesh has " << old_cells
+                  << " cells, about Adaptivity/Maximum cells: the cycles stop"
+                  << std::endl;
+                return false;
+              }
+            field.scale(
+              std::sqrt(event.predicted_cells / adaptivity.max_cells));
+            event.predicted_cells = adaptivity.max_cells;
+          }
+        event.smallest_size = field.range().first;
+
+        // The old mesh and its field stay for the transfer.
+        Timer              watch;
+        Triangulation<dim> old_mesh;
+        old_mesh.copy_triangulation(triangulation);
+        TiedCopyDoFs<dim> old_layer(old_mesh,
+                                    dof_layer.get_fe().degree,
+                                    dof_layer.reference_cell());
+        old_layer.distribute();
+        dealii::Vector<double> copies;
+        dof_layer.expand_all(error_estimator().replicate(relevant_solution),
+                             copies);
+        const dealii::Vector<double> old_copies
+          = copies_on(dof_layer, copies, old_layer);
+        const double old_norm = last_zz.solution_norm;
+
+        {
+          TimerOutput::Scope scope(timer, "remesh (Gmsh)");
+          triangulation.clear();
+          make_laminate_mesh(parameters.geometry,
+                             laminate,
+                             triangulation,
+                             false,
+                             field.function());
+          rebuild_after_mesh_change();
+        }
+        event.mesh_seconds = watch.wall_time();
+
+        watch.restart();
+        {
+          TimerOutput::Scope             scope(timer, "transfer");
+          const NonMatchingTransfer<dim> transfer(old_layer, dof_layer);
+          first_guess.reinit(dof_layer.locally_owned_dofs(), comm);
+          dof_layer.gather(transfer.nodal(old_copies), first_guess);
+          event.outside = transfer.n_outside();
+        }
+        event.transfer_seconds = watch.wall_time();
+
+        Vector relevant(dof_layer.locally_owned_dofs(),
+                        dof_layer.locally_relevant_dofs(),
+                        comm);
+        relevant               = first_guess;
+        const auto   estimator = error_estimator();
+        const double moved_norm
+          = estimator.energy_error(estimator.replicate(relevant),
+                                   Functions::ZeroFunction<dim>(dim));
+        event.energy_change
+          = old_norm > 0 ? std::abs(moved_norm / old_norm - 1) : 0;
+        last_remeshing = event;
+        pcout << "  remeshed: " << old_cells << " -> "
+              << triangulation.n_global_active_cells() << " cells (predicted "
+              << static_cast<unsigned long>(event.predicted_cells)
+              << "), smallest size " << event.smallest_size
+              << " mm; Gmsh and setup " << event.mesh_seconds << " s, transfer "
+              << event.transfer_seconds << " s (" << event.outside
+              << " points outside the old mesh); energy norm of the carried "
+                 "solution differs by "
+              << event.energy_change << std::endl;
+        return true;
+      }
+  }
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace amfrac
