@@ -186,6 +186,10 @@ namespace amfrac
       gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
       gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
       gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+      // A .geo's own factor and bounds would scale or clamp the field.
+      gmsh::option::setNumber("Mesh.MeshSizeFactor", 1);
+      gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
+      gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
       gmsh::model::mesh::setSizeCallback(
         [size](int, int, double x, double y, double) {
           return size(Point<2>(x, y));

@@ -1614,6 +1614,14 @@ namespace amfrac
              "uniform to halve every size)");
       refuse(adaptivity.active() && geometry.mesh_distortion > 0,
              "adaptivity with a Geometry/Mesh distortion");
+      refuse(adaptivity.active() && !geometry.imperfection.empty(),
+             "adaptivity with a Geometry/Imperfection (remeshing sizes the "
+             "columns of an extruded mesh)");
+      refuse(adaptivity.active() && geometry.mesh_file.empty()
+               && geometry.hole_radius == 0 && geometry.global_refinements > 0,
+             "adaptivity on the box with Global refinements > 0 (they also "
+             "split the plies through the thickness, which a remeshing "
+             "would lose: set Elements per ply instead)");
       refuse(adaptivity.active() && geometry.mesh_file.size() > 4
                && geometry.mesh_file.substr(geometry.mesh_file.size() - 4)
                     == ".msh",

@@ -57,7 +57,7 @@ namespace amfrac
         std::vector<double> sizes;
         if (adaptivity.strategy == parameters::Adaptivity::Strategy::uniform)
           for (const auto &cell : triangulation.active_cell_iterators())
-            sizes.push_back(0.5 * in_plane_size(cell));
+            sizes.push_back(std::max(rule.min_size, 0.5 * in_plane_size(cell)));
         else
           {
             // The same equal share as the refinement of hexahedra.

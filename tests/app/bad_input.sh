@@ -500,6 +500,24 @@ $prism
 subsection Adaptivity
   set Refinement cycles = 2
 end"
+expect prism_adaptivity_refined_box "set Elements per ply instead" "$base
+$prism
+subsection Geometry
+  set Global refinements = 1
+end
+subsection Adaptivity
+  set Refinement cycles = 2
+  set Strategy = uniform
+end"
+expect prism_adaptivity_imperfection "adaptivity with a Geometry/Imperfection" "$base
+$prism
+subsection Geometry
+  set Imperfection = 0; 0; 0.01*x
+end
+subsection Adaptivity
+  set Refinement cycles = 2
+  set Strategy = uniform
+end"
 expect prism_adaptivity_kelly "Adaptivity/Estimator = kelly" "$base
 $prism
 subsection Adaptivity
