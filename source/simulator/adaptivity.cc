@@ -24,7 +24,10 @@ namespace amfrac
               if (!refine_mesh())
                 break;
             }
-            setup_after_refinement();
+            // A remeshing has set up its new mesh already (its transfer
+            // needs the new layer).
+            if (!remeshes())
+              setup_after_refinement();
           }
         run_linear();
         report_cycle();
