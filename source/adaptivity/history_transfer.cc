@@ -29,10 +29,12 @@ namespace amfrac
     const Triangulation<dim> &triangulation,
     const unsigned int        degree,
     const Quadrature<dim>    &quadrature,
-    const std::vector<Rule>  &rules)
+    const std::vector<Rule>  &rules,
+    const bool                keep_unchanged_cells)
     : triangulation(triangulation)
     , quadrature(quadrature)
     , rules(rules)
+    , keep_unchanged_cells(keep_unchanged_cells)
     , recovery(triangulation, degree)
   {
     for (unsigned int c = 0; c < rules.size(); ++c)
@@ -194,9 +196,10 @@ namespace amfrac
     const auto         copy      = [&](std::vector<double>       &to,
                           const unsigned int         q_to,
                           const std::vector<double> &from,
-                          const unsigned int         q_from) {
+                          const unsigned int         q_from,
+                          const bool                 all = false) {
       for (unsigned int c = 0; c < n_history; ++c)
-        if (rules[c] == Rule::non_decreasing)
+        if (all || rules[c] == Rule::non_decreasing)
           to[q_to * n_history + c] = from[q_from * n_history + c];
     };
     for (const auto &cell : triangulation.active_cell_iterators())
@@ -206,7 +209,7 @@ namespace amfrac
             kept != old_values.end())
           {
             for (unsigned int q = 0; q < n_q; ++q)
-              copy(mine, q, kept->second, q);
+              copy(mine, q, kept->second, q, keep_unchanged_cells);
             continue;
           }
         if (cell->level() > 0)

@@ -1,3 +1,4 @@
+#include <amfrac/assembly/displacement_gradients.h>
 #include <amfrac/assembly/total_lagrangian.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -29,31 +30,6 @@ namespace amfrac
     : dofs(dofs)
     , plies(plies)
   {}
-
-
-
-  namespace
-  {
-    /** The gradient of the displacement at every quadrature point of the
-     * cell from its nodal values @p u. */
-    template <int dim>
-    void
-    displacement_gradients(const FEValues<dim>          &fe_values,
-                           const dealii::Vector<double> &u,
-                           std::vector<Tensor<2, dim>>  &gradients)
-    {
-      const auto &fe = fe_values.get_fe();
-      for (const unsigned int q : fe_values.quadrature_point_indices())
-        {
-          gradients[q] = 0;
-          for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-            {
-              const unsigned int c = fe.system_to_component_index(i).first;
-              gradients[q][c] += u(i) * fe_values.shape_grad(i, q);
-            }
-        }
-    }
-  } // namespace
 
 
 

@@ -187,6 +187,21 @@ namespace amfrac
     return result;
   }
 
+  template <int dim>
+  SymmetricTensor<2, dim>
+  restrict_to_model(const SymmetricTensor<2, 3> &laminate)
+  {
+    SymmetricTensor<2, dim> model;
+    for (unsigned int a = 0; a < dim; ++a)
+      for (unsigned int b = a; b < dim; ++b)
+        model[a][b] = laminate[laminate_axis<dim>(a)][laminate_axis<dim>(b)];
+    return model;
+  }
+
+  template SymmetricTensor<2, 2>
+  restrict_to_model<2>(const SymmetricTensor<2, 3> &);
+  template SymmetricTensor<2, 3>
+  restrict_to_model<3>(const SymmetricTensor<2, 3> &);
   template SymmetricTensor<4, 2>
   restrict_to_model<2>(const SymmetricTensor<4, 3> &);
   template SymmetricTensor<4, 3>

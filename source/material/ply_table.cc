@@ -92,6 +92,8 @@ namespace amfrac
         ply.strengths       = material.strengths;
         ply.density         = material.elastic.density;
         ply.fracture_energy = material.fracture_energy;
+        ply.plastic         = material.plastic;
+        ply.hardening       = material.hardening;
         table.push_back(ply);
       }
     if (dim == 2 && laminate.in_plane)

@@ -327,6 +327,28 @@ namespace amfrac
                             Patterns::List(Patterns::Double()),
                             what + " [" + unit + "]");
         }
+      prm.declare_entry(
+        "Plasticity",
+        "none",
+        Patterns::List(Patterns::Selection("none|hoffman"), 1),
+        "none: the material is elastic at any stress (its strengths only "
+        "enter the Hoffman index and crack insertion). hoffman: Hoffman "
+        "anisotropic plasticity, the seed's nonlinear ply: the Hoffman "
+        "criterion of the strengths above is the initial yield surface "
+        "(so tension and compression yield at different stresses), "
+        "associative flow, isotropic hardening by Hardening, a backward-"
+        "Euler return mapping with its consistent tangent on the static "
+        "Newton path. A plastic ply pays for a return mapping at every "
+        "quadrature point and iteration; elastic plies pay nothing.");
+      prm.declare_entry("Hardening",
+                        "0",
+                        Patterns::List(Patterns::Double(0)),
+                        "isotropic hardening of Plasticity = hoffman: the "
+                        "strengths of the yield surface grow by the factor "
+                        "1 + Hardening x kappa, kappa the equivalent "
+                        "plastic strain (the accumulated length of the "
+                        "plastic strain increments, engineering shear); 0 "
+                        "is perfectly plastic [-]");
       prm.leave_subsection();
     }
 
@@ -350,7 +372,19 @@ namespace amfrac
                   "give one value or one per material name ("
                     + std::to_string(names.size()) + ")");
         }
+      const std::vector<std::string> plasticity
+        = Utilities::split_string_list(prm.get("Plasticity"));
+      const std::vector<double> hardening = Utilities::string_to_double(
+        Utilities::split_string_list(prm.get("Hardening")));
       prm.leave_subsection();
+      require(plasticity.size() == 1 || plasticity.size() == names.size(),
+              "Materials/Plasticity",
+              "give one value or one per material name ("
+                + std::to_string(names.size()) + ")");
+      require(hardening.size() == 1 || hardening.size() == names.size(),
+              "Materials/Hardening",
+              "give one value or one per material name ("
+                + std::to_string(names.size()) + ")");
 
       for (const std::string &name : names)
         require(!name.empty()
@@ -373,29 +407,31 @@ namespace amfrac
       for (unsigned int m = 0; m < names.size(); ++m)
         {
           OrthotropicMaterial mat;
-          mat.name             = names[m];
-          ElasticConstants &e  = mat.elastic;
-          e.E1                 = get("E1", m);
-          e.E2                 = get("E2", m);
-          e.E3                 = get("E3", m);
-          e.G12                = get("G12", m);
-          e.G13                = get("G13", m);
-          e.G23                = get("G23", m);
-          e.nu12               = get("nu12", m);
-          e.nu13               = get("nu13", m);
-          e.nu23               = get("nu23", m);
-          e.density            = get("Density", m);
-          Strengths &s         = mat.strengths;
-          s.Xt                 = get("Xt", m);
-          s.Xc                 = get("Xc", m);
-          s.Yt                 = get("Yt", m);
-          s.Yc                 = get("Yc", m);
-          s.Zt                 = get("Zt", m);
-          s.Zc                 = get("Zc", m);
-          s.S12                = get("S12", m);
-          s.S13                = get("S13", m);
-          s.S23                = get("S23", m);
-          mat.fracture_energy  = get("Gc", m);
+          mat.name            = names[m];
+          ElasticConstants &e = mat.elastic;
+          e.E1                = get("E1", m);
+          e.E2                = get("E2", m);
+          e.E3                = get("E3", m);
+          e.G12               = get("G12", m);
+          e.G13               = get("G13", m);
+          e.G23               = get("G23", m);
+          e.nu12              = get("nu12", m);
+          e.nu13              = get("nu13", m);
+          e.nu23              = get("nu23", m);
+          e.density           = get("Density", m);
+          Strengths &s        = mat.strengths;
+          s.Xt                = get("Xt", m);
+          s.Xc                = get("Xc", m);
+          s.Yt                = get("Yt", m);
+          s.Yc                = get("Yc", m);
+          s.Zt                = get("Zt", m);
+          s.Zc                = get("Zc", m);
+          s.S12               = get("S12", m);
+          s.S13               = get("S13", m);
+          s.S23               = get("S23", m);
+          mat.fracture_energy = get("Gc", m);
+          mat.plastic = plasticity[plasticity.size() == 1 ? 0 : m] == "hoffman";
+          mat.hardening        = hardening[hardening.size() == 1 ? 0 : m];
           const std::string at = " (material '" + mat.name + "')";
           // Moduli beyond 1e8 MPa (80 times diamond's) or densities beyond
           // 1e-6 t/mm^3 (40 times osmium's) are unit mistakes (Pa, kg/m^3),
@@ -1502,8 +1538,11 @@ namespace amfrac
                          "an open hole goes through the thickness: it needs "
                          "Dimension = 3 or Geometry/2D model = in-plane");
       materials.parse_parameters(prm);
+      plastic_plies = false;
       for (const Ply &ply : geometry.plies)
-        materials.index_of(ply.material);
+        plastic_plies
+          = plastic_plies
+            || materials.materials[materials.index_of(ply.material)].plastic;
       discretization.parse_parameters(prm);
       boundary_conditions.parse_parameters(prm, dimension);
       linear_solver.parse_parameters(prm);
@@ -1538,7 +1577,7 @@ namespace amfrac
       checkpoint.parse_parameters(prm, output.directory);
       cracks.parse_parameters(prm, geometry.plies.size());
       if (adaptivity.during_history() && cohesive.interfaces.empty()
-          && ((!cracks.active && !time.explicit_dynamics)
+          && ((!cracks.active && !time.explicit_dynamics && !plastic_plies)
               || adaptivity.process_zone_elements > 0))
         throw InputError(
           adaptivity.process_zone_elements > 0 ?
@@ -1546,9 +1585,9 @@ namespace amfrac
           adaptivity.refine_every > 0 ? "Adaptivity/Refine every" :
                                         "Adaptivity/Error threshold",
           "refinement during a load history is for explicit runs and for "
-          "scenes with cohesive interfaces or crack insertion (the "
-          "process-zone rule for scenes with cohesive interfaces); a "
-          "linear static scene adapts by Refinement cycles");
+          "scenes with cohesive interfaces, crack insertion or plastic "
+          "plies (the process-zone rule for scenes with cohesive "
+          "interfaces); a linear static scene adapts by Refinement cycles");
       if (dimension == 2 && adaptivity.process_zone_axes == 2)
         throw InputError("Adaptivity/Process zone directions",
                          "y is the thickness of a 2D laminate; the process-"
@@ -1575,6 +1614,7 @@ namespace amfrac
       check_impactor_input();
       contact.parse_parameters(prm, geometry.plies.size());
       check_contact_input();
+      check_plasticity_input();
       check_prism_input();
       check_mesh_file_input();
     }
@@ -1781,11 +1821,12 @@ namespace amfrac
         throw InputError(name,
                          "arc-length follows a static equilibrium path: it "
                          "needs Time/Time integration = static");
-      if (!total_lagrangian && cohesive.interfaces.empty())
+      if (!total_lagrangian && cohesive.interfaces.empty() && !plastic_plies)
         throw InputError(name,
                          "arc-length follows a nonlinear path, and this "
                          "scene is linear: set Kinematics = total "
-                         "Lagrangian or make interfaces cohesive");
+                         "Lagrangian, make interfaces cohesive or plies "
+                         "plastic");
       if (adaptivity.during_history())
         throw InputError(name,
                          "arc-length with refinement during the load "
@@ -1831,6 +1872,46 @@ namespace amfrac
                          "mass scaling is not available with crack "
                          "insertion (the mass a node gets would change when "
                          "it splits); set it to 0");
+    }
+
+
+
+    void
+    Parameters::check_plasticity_input() const
+    {
+      if (!plastic_plies)
+        return;
+      const auto refuse = [&](const bool condition, const std::string &what) {
+        if (condition)
+          throw InputError("Materials/Plasticity",
+                           "plastic plies run on the static small-strain "
+                           "Newton path so far; they cannot be combined "
+                           "with "
+                             + what);
+      };
+      refuse(time.explicit_dynamics,
+             "Time/Time integration = explicit (the explicit path's "
+             "internal force is the elastic one)");
+      refuse(geometry.in_plane,
+             "Geometry/2D model = in-plane (a laminate homogenized "
+             "through its thickness has no plies to yield)");
+      refuse(total_lagrangian, "Kinematics = total Lagrangian");
+      refuse(cracks.active,
+             "Crack insertion/Criterion (the same Hoffman surface would "
+             "be the yield surface and the crack criterion)");
+      refuse(buckling.active() || geometry.imperfection_mode > 0,
+             "a linear buckling analysis (Buckling/Number of modes, "
+             "Geometry/Imperfection mode)");
+      refuse(adaptivity.active(),
+             "Adaptivity/Refinement cycles (cycles repeat a linear run; a "
+             "plastic run adapts during its load history: Refine every, "
+             "Error threshold)");
+      refuse(geometry.prisms, "Geometry/Element shape = prism");
+      refuse(nonlinear_solver.dissipation_control
+               && cohesive.interfaces.empty(),
+             "Nonlinear solver/Control = dissipation or opening without "
+             "cohesive interfaces (they control what the interfaces "
+             "dissipate or open); use displacement or arc-length");
     }
 
 

@@ -71,16 +71,19 @@ namespace amfrac
     const DataPostprocessorInputs::Vector<dim> &inputs,
     std::vector<dealii::Vector<double>>        &computed) const
   {
-    const auto  cell = inputs.template get_cell<dim>();
-    const auto &ply  = plies[cell->material_id()];
+    const auto                   cell = inputs.template get_cell<dim>();
+    const auto                  &ply  = plies[cell->material_id()];
+    const SymmetricTensor<2, 3> *plastic
+      = plastic_strain.empty() ? nullptr :
+                                 &plastic_strain[cell->active_cell_index()];
     for (unsigned int q = 0; q < computed.size(); ++q)
       {
         Tensor<2, dim> gradient;
         for (unsigned int d = 0; d < dim; ++d)
           gradient[d] = inputs.solution_gradients[q][d];
         const SymmetricTensor<2, dim> strain = symmetrize(gradient);
-        const PlyStress               stress = evaluate_ply_stress(ply, strain);
-        SymmetricTensor<2, 3>         strain_3d;
+        const PlyStress stress = evaluate_ply_stress(ply, strain, plastic);
+        SymmetricTensor<2, 3> strain_3d;
         for (unsigned int a = 0; a < dim; ++a)
           for (unsigned int b = a; b < dim; ++b)
             strain_3d[a][b] = strain[a][b];

@@ -72,7 +72,9 @@ namespace amfrac
 
   template <int dim>
   std::vector<typename PointProbe<dim>::Value>
-  PointProbe<dim>::evaluate(const dealii::Vector<double> &copy_values) const
+  PointProbe<dim>::evaluate(
+    const dealii::Vector<double>             &copy_values,
+    const std::vector<SymmetricTensor<2, 3>> &plastic_strain) const
   {
     std::vector<Value>  values(cells.size());
     std::vector<double> flat;
@@ -92,8 +94,12 @@ namespace amfrac
             fe_values[displacement].get_function_gradients(copy_values, grad);
             values[k].displacement = u[0];
             values[k].stress
-              = evaluate_ply_stress(plies[cells[k]->material_id()],
-                                    symmetrize(grad[0]))
+              = evaluate_ply_stress(
+                  plies[cells[k]->material_id()],
+                  symmetrize(grad[0]),
+                  plastic_strain.empty() ?
+                    nullptr :
+                    &plastic_strain[cells[k]->active_cell_index()])
                   .model;
           }
         for (unsigned int d = 0; d < dim; ++d)

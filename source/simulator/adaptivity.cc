@@ -249,6 +249,8 @@ namespace amfrac
   Simulator<dim>::rebuild_after_mesh_change(const bool same_mesh)
   {
     dof_layer.distribute(released_faces(), same_mesh);
+    if (plasticity)
+      plasticity->setup();
     lever.collect(dof_layer);
     dof_layer.add_relevant_dofs(lever.all_dofs());
     for (auto &patch : loads.patches)

@@ -564,12 +564,51 @@ namespace amfrac
     save_vector(part, "displacement", newton->converged_solution);
     save_vector(part, "previous_residual", newton->previous_residual);
     save_vector(part, "previous_load", newton->previous_load);
+    if (plasticity)
+      {
+        run.put("newton.plastic_work", newton->plastic_work);
+        // Cell by cell in the order of the part's cells.
+        part.put("plasticity.states", plasticity->owned_values());
+      }
     if (parameters.nonlinear_solver.arc_length)
       {
         run.put("newton.arc_scale", newton->arc_scale);
         run.put("newton.arc_nominal", newton->arc_nominal);
         save_vector(part, "arc_previous", newton->arc_previous);
       }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::restore_plastic_history()
+  {
+    const unsigned int width
+      = plasticity->n_points() * PlasticPlies<dim>::n_components;
+    // Every saved cell of every part, by id: any number of ranks reads it.
+    std::map<CellId, const double *> saved;
+    for (const auto &part : restart->parts)
+      {
+        const auto &cells  = part.get_integers("cells");
+        const auto &values = part.get("plasticity.states");
+        if (values.size() != cells.size() / 4 * width)
+          throw InputError("checkpoint '" + restart->folder
+                           + "': the plastic history has the wrong size");
+        for (std::size_t c = 0; c < cells.size() / 4; ++c)
+          saved[cell_id<dim>(cells, c)] = values.data() + c * width;
+      }
+    for (const auto &cell : dof_layer.copy_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const auto entry = saved.find(cell->id());
+          if (entry == saved.end())
+            throw InputError("checkpoint '" + restart->folder
+                             + "' has no plastic history of cell "
+                             + cell->id().to_string()
+                             + ": it was written for another mesh");
+          plasticity->set_cell_values(cell, entry->second);
+        }
   }
 
 
@@ -597,6 +636,11 @@ namespace amfrac
       restore_vector("displacement", newton->converged_solution);
       restore_vector("previous_residual", newton->previous_residual);
       restore_vector("previous_load", newton->previous_load);
+      if (plasticity)
+        {
+          newton->plastic_work = run.get_scalar("newton.plastic_work");
+          restore_plastic_history();
+        }
       if (parameters.nonlinear_solver.arc_length)
         {
           newton->arc_scale   = run.get_scalar("newton.arc_scale");

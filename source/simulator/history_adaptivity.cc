@@ -2,6 +2,7 @@
 // when to refine (every N steps, the seed's ZZ threshold, the process-zone
 // rule), and the transfer of the converged state to the new mesh (the
 // seed's tau_2 for the displacement, tau_1 for the interface history).
+#include <amfrac/adaptivity/history_transfer.h>
 #include <amfrac/cohesive/transfer_columns.h>
 #include <amfrac/geometry/in_plane_refinement.h>
 #include <amfrac/simulator/simulator.h>
@@ -232,24 +233,37 @@ namespace amfrac
     using Ledger = typename CohesiveInterfaces<dim>::Ledger;
     typename CohesiveInterfaces<dim>::TransferReport report;
     std::vector<Ledger>                              before, after;
+    double kappa_before = 0, kappa_after = 0;
     {
       TimerOutput::Scope scope(timer, "refine and transfer");
-      before = interfaces->ledger(comm);
+      if (interfaces)
+        before = interfaces->ledger(comm);
       const double stored_before
         = bulk_strain_energy(newton->converged_solution)
           + total(before, &Ledger::work);
-      const auto             snapshot = interfaces->snapshot(comm);
+      typename CohesiveInterfaces<dim>::Snapshot snapshot;
+      if (interfaces)
+        snapshot = interfaces->snapshot(comm);
       dealii::Vector<double> copies;
       dof_layer.expand_all(dof_layer.replicate(newton->converged_solution),
                            copies);
       SolutionTransfer<dim, dealii::Vector<double>> displacement(
         dof_layer.copy_handler());
       displacement.prepare_for_coarsening_and_refinement(copies);
+      const auto plastic_history = prepare_plastic_transfer();
+      if (plasticity)
+        kappa_before = plasticity->max_kappa();
       execute_mesh_change();
       setup_after_refinement();
-      interfaces->setup(dof_layer, parameters.boundary_conditions.constants);
+      if (interfaces)
+        interfaces->setup(dof_layer, parameters.boundary_conditions.constants);
       dealii::Vector<double> new_copies(dof_layer.n_copies());
       displacement.interpolate(copies, new_copies);
+      if (plasticity)
+        {
+          plasticity->set_field(plastic_history->interpolate());
+          kappa_after = plasticity->max_kappa();
+        }
 
       // A new Newton state on the new mesh (with the run's totals).
       setup_newton();
@@ -260,18 +274,22 @@ namespace amfrac
       make_constraints(t, constraints, false);
       constraints.distribute(newton->converged_solution);
       relevant_solution = newton->converged_solution;
-      report   = interfaces->transfer(snapshot, relevant_solution, comm);
+      if (interfaces)
+        report = interfaces->transfer(snapshot, relevant_solution, comm);
       solution = newton->converged_solution;
       // copy_solution() follows the mesh.
       dof_layer.expand(relevant_solution, copy_values);
       // The reactions of the transferred state start the trapezoidal rule
       // of the external work of the next step.
       assembler.assemble_load(loads, t, newton->external_load);
+      as_transferred = true;
       update_residual(solution, nullptr);
+      as_transferred            = false;
       newton->previous_residual = newton->residual;
       newton->previous_load     = newton->external_load;
       newton->converged_force   = load_force(newton->residual);
-      after                     = interfaces->ledger(comm);
+      if (interfaces)
+        after = interfaces->ledger(comm);
       newton->remeshing_energy += bulk_strain_energy(solution)
                                   + total(after, &Ledger::work) - stored_before;
     }
@@ -286,16 +304,56 @@ namespace amfrac
       {"unknowns", dof_layer.n_dofs()},
       {"by_estimate", by_estimate ? 1. : 0.},
       {"zz_relative_error", zz_relative}};
-    const auto transfer = interface_transfer_columns(before, after, report);
-    columns.insert(columns.end(), transfer.begin(), transfer.end());
+    if (interfaces)
+      {
+        const auto transfer = interface_transfer_columns(before, after, report);
+        columns.insert(columns.end(), transfer.begin(), transfer.end());
+      }
+    if (plasticity)
+      {
+        columns.emplace_back("max_equivalent_plastic_strain_before",
+                             kappa_before);
+        columns.emplace_back("max_equivalent_plastic_strain_after",
+                             kappa_after);
+      }
     columns.emplace_back("remeshing_energy", newton->remeshing_energy);
     cycle_summary->add_row(columns);
     pcout << "  adapted after step " << step << ": "
           << triangulation.n_global_active_cells() << " cells, "
-          << dof_layer.n_dofs() << " unknowns; interface history of "
-          << report.injected << " points injected, " << report.aggregated
-          << " aggregated; dissipated " << total(before, &Ledger::dissipated)
-          << " -> " << total(after, &Ledger::dissipated) << std::endl;
+          << dof_layer.n_dofs() << " unknowns";
+    if (interfaces)
+      pcout << "; interface history of " << report.injected
+            << " points injected, " << report.aggregated
+            << " aggregated; dissipated " << total(before, &Ledger::dissipated)
+            << " -> " << total(after, &Ledger::dissipated);
+    if (plasticity)
+      pcout << "; largest equivalent plastic strain " << kappa_before << " -> "
+            << kappa_after;
+    pcout << std::endl;
+  }
+
+
+
+  template <int dim>
+  std::unique_ptr<QuadratureHistoryTransfer<dim>>
+  Simulator<dim>::prepare_plastic_transfer() const
+  {
+    if (!plasticity)
+      return nullptr;
+    // tau_1: the plastic strain by the seed's projection, kappa (an
+    // irreversible measure) by a rule that never lowers it; cells the
+    // change keeps keep their values exactly.
+    using Rule = typename QuadratureHistoryTransfer<dim>::Rule;
+    std::vector<Rule> rules(PlasticPlies<dim>::n_components - 1, Rule::smooth);
+    rules.push_back(Rule::non_decreasing);
+    auto transfer = std::make_unique<QuadratureHistoryTransfer<dim>>(
+      triangulation,
+      dof_layer.get_fe().degree,
+      plasticity->get_quadrature(),
+      rules,
+      true);
+    transfer->prepare(plasticity->gather_field());
+    return transfer;
   }
 
   template <int dim>

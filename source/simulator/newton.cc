@@ -10,6 +10,7 @@
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace amfrac
@@ -78,9 +79,11 @@ namespace amfrac
     const NewtonState &old              = newton ? *newton : *fresh;
     const double       external_work    = old.external_work;
     const double       remeshing_energy = old.remeshing_energy;
+    const double       plastic_work     = old.plastic_work;
     newton                              = std::make_unique<NewtonState>();
     newton->external_work               = external_work;
     newton->remeshing_energy            = remeshing_energy;
+    newton->plastic_work                = plastic_work;
     make_constraints(0., newton->increment_constraints, true);
 
     const IndexSet &owned    = dof_layer.locally_owned_dofs();
@@ -122,6 +125,8 @@ namespace amfrac
                       &newton->arc_previous})
       v->reinit(owned, comm);
     newton->interface_force.reinit(owned, relevant, comm, true);
+    if (plasticity)
+      newton->plastic_force.reinit(owned, relevant, comm, true);
     relevant_solution.reinit(owned, relevant, comm);
   }
 
@@ -153,6 +158,14 @@ namespace amfrac
         if (tangent)
           tangent->copy_from(n.bulk_condensed);
       }
+    bool plastic_ok = true;
+    if (plasticity)
+      {
+        TimerOutput::Scope scope(timer, "plastic plies");
+        n.plastic_force = 0;
+        plastic_ok      = add_plastic_correction(tangent);
+        n.residual += n.plastic_force;
+      }
     if (interfaces)
       {
         TimerOutput::Scope scope(timer, "interfaces");
@@ -167,7 +180,38 @@ namespace amfrac
         n.residual += n.interface_force;
       }
     n.residual -= n.external_load;
-    return condense_residual();
+    const double norm = condense_residual();
+    // A return mapping that failed makes the step fail (and be cut).
+    return plastic_ok ? norm : std::numeric_limits<double>::quiet_NaN();
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::add_plastic_correction(
+    TrilinosWrappers::SparseMatrix *tangent)
+  {
+    NewtonState &n         = *newton;
+    const bool   converged = plasticity->add_correction(relevant_solution,
+                                                      n.increment_constraints,
+                                                      n.plastic_force,
+                                                      tangent,
+                                                      !as_transferred);
+    n.plastic_force.compress(VectorOperation::add);
+    plastic_failure.clear();
+    if (Utilities::MPI::min(converged ? 1 : 0, comm) == 1)
+      return true;
+    // The first failing rank's place, on every rank (for the message of
+    // a run that cannot go on).
+    for (const auto &failure :
+         Utilities::MPI::all_gather(comm, plasticity->failure()))
+      if (!failure.empty())
+        {
+          plastic_failure = failure;
+          break;
+        }
+    return false;
   }
 
 
@@ -219,16 +263,28 @@ namespace amfrac
   void
   Simulator<dim>::tangent_product(const Vector &direction, Vector &product)
   {
-    // K_T d = K_bulk d + K_interfaces(relevant_solution) d, unconstrained.
+    // K_T d = K_bulk d + K_plastic(relevant_solution) d
+    // + K_interfaces(relevant_solution) d, unconstrained.
     NewtonState &n = *newton;
     n.bulk_unconstrained.vmult(product, direction);
-    if (!interfaces)
+    if (!interfaces && !plasticity)
       return;
     Vector relevant_direction(dof_layer.locally_owned_dofs(),
                               dof_layer.locally_relevant_dofs(),
                               comm);
     relevant_direction = direction;
-    n.interface_force  = 0;
+    if (plasticity)
+      {
+        n.plastic_force = 0;
+        plasticity->add_tangent_product(relevant_solution,
+                                        relevant_direction,
+                                        n.plastic_force);
+        n.plastic_force.compress(VectorOperation::add);
+        product += n.plastic_force;
+      }
+    if (!interfaces)
+      return;
+    n.interface_force = 0;
     interfaces->add_tangent_product(relevant_solution,
                                     relevant_direction,
                                     n.interface_force);
@@ -293,9 +349,16 @@ namespace amfrac
     // The bulk never changes: if no interface point changed its tangent
     // since the last factorization (elastic steps, open cracks), reuse it.
     // A total Lagrangian bulk changes with every iteration.
+    // Plastic plies: likewise if no point was plastic in this tangent nor
+    // in the factorized one.
     const bool unchanged
-      = !finite_strain && interfaces
-        && Utilities::MPI::min(interfaces->tangent_unchanged() ? 1 : 0, comm)
+      = !finite_strain && (interfaces || plasticity)
+        && Utilities::MPI::min((!interfaces || interfaces->tangent_unchanged())
+                                   && (!plasticity
+                                       || plasticity->tangent_unchanged()) ?
+                                 1 :
+                                 0,
+                               comm)
              == 1;
     if (!solver_ready)
       solver.initialize(system_matrix,
@@ -308,6 +371,8 @@ namespace amfrac
       ++n_factorizations;
     if ((!solver_ready || !unchanged) && interfaces)
       interfaces->mark_factorized();
+    if ((!solver_ready || !unchanged) && plasticity)
+      plasticity->mark_factorized();
     solver_ready = true;
     solver.solve(x, b);
   }
@@ -660,7 +725,10 @@ namespace amfrac
             solution = start;
             solution.add(alpha, n.increment);
             const double trial_norm = update_residual(solution, nullptr);
-            if (trial == 0 || trial_norm < best_norm)
+            // A residual that is not finite (a return mapping that
+            // failed) is worse than any finite one.
+            if (trial == 0 || trial_norm < best_norm
+                || (!std::isfinite(best_norm) && std::isfinite(trial_norm)))
               best_norm = trial_norm, best_alpha = alpha;
             if (!p.line_search || trial_norm < (1 - 1e-4 * alpha) * norm
                 || trial == 5)
@@ -719,13 +787,22 @@ namespace amfrac
 
     std::vector<std::pair<std::string, double>> columns
       = {{"external_work", n.external_work}, {"strain_energy", strain_energy}};
+    if (plasticity)
+      {
+        columns.emplace_back("plastic_work", n.plastic_work);
+        columns.emplace_back("yielding_points",
+                             Utilities::MPI::sum(plasticity->yielding_points(),
+                                                 comm));
+        columns.emplace_back("max_equivalent_plastic_strain",
+                             plasticity->max_kappa());
+      }
     const double interface_work = add_interface_columns(columns);
     // Only scenes whose mesh changes during the history have the term.
     if (parameters.adaptivity.during_history())
       columns.emplace_back("remeshing_energy", n.remeshing_energy);
     columns.emplace_back("balance_error",
                          n.external_work + n.remeshing_energy - strain_energy
-                           - interface_work);
+                           - n.plastic_work - interface_work);
     n.previous_residual = n.residual;
     n.previous_load     = n.external_load;
     return columns;
@@ -743,7 +820,29 @@ namespace amfrac
       return newton->strain_energy;
     Vector Ku = u;
     newton->bulk_unconstrained.vmult(Ku, u);
-    return 0.5 * (Ku * u);
+    if (!plasticity)
+      return 0.5 * (Ku * u);
+    // The plastic strain takes its part out of the stored energy.
+    Vector relevant(dof_layer.locally_owned_dofs(),
+                    dof_layer.locally_relevant_dofs(),
+                    comm);
+    relevant = u;
+    return 0.5 * (Ku * u) + plasticity->stored_energy_correction(relevant);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::commit_plastic_state()
+  {
+    NewtonState &n    = *newton;
+    relevant_solution = solution;
+    Vector previous(dof_layer.locally_owned_dofs(),
+                    dof_layer.locally_relevant_dofs(),
+                    comm);
+    previous = n.converged_solution;
+    n.plastic_work += plasticity->commit(relevant_solution, previous);
   }
 
 
@@ -1022,11 +1121,21 @@ namespace amfrac
                         << t << ") is written";
                 if (!report.failure.empty())
                   message << "; " << report.failure;
-                if (std::any_of(report.residuals.begin(),
-                                report.residuals.end(),
-                                [](const double r) {
-                                  return !std::isfinite(r);
-                                }))
+                if (!plastic_failure.empty())
+                  message << "; " << plastic_failure
+                          << ": the load may exceed the limit load of the "
+                             "plastic plies (with perfectly plastic plies, "
+                             "Materials/Hardening = 0, there is no "
+                             "equilibrium beyond it: prescribe "
+                             "displacements instead of loads), or a step "
+                             "asks for more plastic flow than the local "
+                             "Newton iteration follows";
+                if (plastic_failure.empty()
+                    && std::any_of(report.residuals.begin(),
+                                   report.residuals.end(),
+                                   [](const double r) {
+                                     return !std::isfinite(r);
+                                   }))
                   message << "; the residual was not finite (NaN or inf): "
                              "look for a load or displacement expression "
                              "that is not defined there (a sqrt or log of a "
@@ -1038,6 +1147,8 @@ namespace amfrac
           }
         if (interfaces)
           interfaces->commit();
+        if (plasticity)
+          commit_plastic_state();
         const unsigned int its = report.residuals.size() - 1;
         iterations.push_back(its);
         total_iterations += its;

@@ -101,6 +101,11 @@ namespace amfrac
       finite_strain
         = std::make_unique<TotalLagrangianAssembler<dim>>(dof_layer, plies);
     dof_layer.distribute(released_faces());
+    if (parameters.plastic_plies)
+      {
+        plasticity = std::make_unique<PlasticPlies<dim>>(dof_layer, plies);
+        plasticity->setup();
+      }
     // The lever couples distant nodes: every rank sees all of them.
     lever.collect(dof_layer);
     dof_layer.add_relevant_dofs(lever.all_dofs());
@@ -450,7 +455,8 @@ namespace amfrac
     // Refinement cycles repeat the whole run per mesh: they neither
     // checkpoint nor resume (the parameters refuse Every n steps there).
     const bool resumable = parameters.time.explicit_dynamics || interfaces
-                           || finite_strain || !parameters.adaptivity.active();
+                           || finite_strain || plasticity
+                           || !parameters.adaptivity.active();
     if (restart && !resumable)
       throw InputError("Adaptivity/Refinement cycles",
                        "a run with refinement cycles cannot resume from a "
@@ -473,6 +479,8 @@ namespace amfrac
       pcout << "crack insertion (Hoffman), ";
     if (finite_strain)
       pcout << "total Lagrangian, ";
+    if (plasticity)
+      pcout << "Hoffman plasticity, ";
     pcout << triangulation.n_active_cells() << " cells, " << dof_layer.n_dofs()
           << " unknowns (" << dof_layer.n_copies() << " node copies), "
           << (dof_layer.reference_cell().is_hyper_cube() ? "Q" : "prisms P")
@@ -494,7 +502,7 @@ namespace amfrac
       }
     if (parameters.time.explicit_dynamics)
       run_explicit();
-    else if (interfaces || finite_strain)
+    else if (interfaces || finite_strain || plasticity)
       run_newton();
     else if (parameters.adaptivity.active())
       run_adaptive();
@@ -668,7 +676,22 @@ namespace amfrac
         row.emplace_back("lever_hinge", hinge);
         row.emplace_back("lever_saddle", saddle);
       }
-    const auto values = probe->evaluate(copy_values);
+    // Plastic plies: stresses of the elastic strain (the cell means of the
+    // plastic strain taken off), and the equivalent plastic strain.
+    typename PlasticPlies<dim>::CellMeans plastic;
+    if (plasticity)
+      {
+        plastic = plasticity->cell_means();
+        if (field_output)
+          {
+            field_output->set_plastic_strain(plastic.plastic_strain);
+            field_output->set_cell_field(
+              "equivalent_plastic_strain",
+              dealii::Vector<float>(plastic.kappa.begin(),
+                                    plastic.kappa.end()));
+          }
+      }
+    const auto values = probe->evaluate(copy_values, plastic.plastic_strain);
     for (unsigned int p = 0; p < values.size(); ++p)
       {
         const std::string prefix = "p" + std::to_string(p) + "_";

@@ -770,5 +770,116 @@ if [ $status -eq 0 ] || ! grep -q "Crack insertion/Penalty stiffness" crack_pena
 else echo "ok   crack_penalty: $(cat crack_penalty.stderr)"; fi
 rm -rf out
 
+# Plastic plies (Materials/Plasticity = hoffman): malformed entries, and
+# the paths they cannot run on yet.
+plastic='subsection Materials
+  set Plasticity = hoffman
+end'
+expect plasticity_value "Plasticity" "$base
+subsection Materials
+  set Plasticity = hofman
+end"
+expect plasticity_count "Materials/Plasticity" "$base
+subsection Materials
+  set Names = a, b, c
+  set Plasticity = hoffman, none
+end"
+expect hardening_negative "Hardening" "$base
+subsection Materials
+  set Hardening = -1
+end"
+expect plastic_explicit "Materials/Plasticity" "$base
+$plastic
+subsection Time
+  set Time integration = explicit
+end"
+expect plastic_in_plane "Materials/Plasticity" "set Dimension = 2
+subsection Geometry
+  set Stacking sequence = [0/90]s
+  set 2D model = in-plane
+end
+$plastic
+subsection Output
+  set Directory = out
+end"
+expect plastic_total_lagrangian "Materials/Plasticity" "$base
+$plastic
+set Kinematics = total Lagrangian"
+expect plastic_cracks "Materials/Plasticity" "$base
+$plastic
+subsection Crack insertion
+  set Criterion = hoffman
+end"
+expect plastic_buckling "Materials/Plasticity" "$base
+$plastic
+subsection Buckling
+  set Number of modes = 2
+end"
+expect plastic_cycles "Materials/Plasticity" "$base
+$plastic
+subsection Adaptivity
+  set Refinement cycles = 2
+end"
+expect plastic_prisms "Materials/Plasticity" "$base
+$plastic
+subsection Geometry
+  set Element shape = prism
+end"
+expect plastic_dissipation "Materials/Plasticity" "$base
+$plastic
+subsection Nonlinear solver
+  set Control = dissipation
+end"
+
+# A perfectly plastic ply under a traction beyond its limit load has no
+# equilibrium: the run stops with the cause, exit status 1, and keeps the
+# converged steps.
+printf '%s\n' "set Dimension = 3
+subsection Geometry
+  set Stacking sequence = [90]
+  set Ply thickness = 1
+  set Length = 1
+  set Width = 1
+  set Elements along length = 2
+  set Elements along width = 2
+end
+$plastic
+subsection Boundary conditions
+  subsection x-
+    set Type = displacement
+    set Components = x
+    set Displacement = 0
+  end
+  subsection x+
+    set Type = traction
+    set Traction = 80*t; 0; 0
+  end
+  subsection y-
+    set Type = displacement
+    set Components = y
+    set Displacement = 0
+  end
+  subsection z-
+    set Type = displacement
+    set Components = z
+    set Displacement = 0
+  end
+end
+subsection Time
+  set Number of steps = 8
+end
+subsection Output
+  set Directory = out
+  set Field format = none
+end" > plastic_limit.prm
+"$amfrac" plastic_limit.prm > plastic_limit.stdout 2> plastic_limit.stderr
+status=$?
+if [ $status -ne 1 ] || ! grep -q "limit load of the plastic plies" plastic_limit.stderr \
+   || [ "$(wc -l < plastic_limit.stderr)" -ne 1 ] \
+   || [ "$(wc -l < out/history.csv)" -ne 6 ]; then
+  echo "FAIL plastic_limit: status $status"; cat plastic_limit.stderr; failures=$((failures + 1))
+else echo "ok   plastic_limit: $(cat plastic_limit.stderr)"; fi
+rm -rf out
+
 echo "$failures failure(s)"
 [ $failures -eq 0 ]

@@ -8,7 +8,9 @@
 // - a non-decreasing component (random) is kept on kept cells, injected
 //   from the parent's nearest point on refined cells, and is the largest
 //   value of the children on coarsened cells: never below the old value
-//   at the same place.
+//   at the same place;
+// - with keep_unchanged_cells, cells the change keeps keep every
+//   component exactly, also a field outside the recovery space.
 #include "../check.h"
 
 #include <amfrac/adaptivity/history_transfer.h>
@@ -218,6 +220,71 @@ namespace
     check_smooth(mesh, field, 1e-10);
     check_non_decreasing(before, mesh, field);
   }
+
+  /** keep_unchanged_cells: a field outside the recovery space (random
+   * per point) keeps its values exactly on the cells the change keeps,
+   * in the smooth components too; without it the projection changes
+   * them. */
+  void
+  run_kept_cells()
+  {
+    const auto prm = parameters::Parameters::from_string(
+      "set Dimension = 2\nsubsection Geometry\n"
+      "  set Stacking sequence = [0/90]\n  set Ply thickness = 0.5\n"
+      "  set Length = 4\n  set Elements along length = 4\n"
+      "  set Elements per ply = 2\nend\n");
+    const Laminate laminate(prm.geometry, prm.materials);
+    for (const bool keep : {true, false})
+      {
+        Triangulation<2> tria;
+        make_laminate_mesh<2>(prm.geometry, laminate, tria);
+        const QGauss<2>                        quadrature(2);
+        std::mt19937                           random(7);
+        std::uniform_real_distribution<double> noise(0, 1);
+        Transfer::Field                        field(tria.n_active_cells(),
+                              std::vector<double>(quadrature.size() * 2));
+        for (auto &values : field)
+          for (double &v : values)
+            v = noise(random);
+        Transfer                              transfer(tria,
+                          1,
+                          quadrature,
+                          {Transfer::Rule::smooth,
+                                                        Transfer::Rule::non_decreasing},
+                          keep);
+        std::map<CellId, std::vector<double>> old;
+        for (const auto &cell : tria.active_cell_iterators())
+          {
+            old[cell->id()] = field[cell->active_cell_index()];
+            if (cell->center()[0] < 2)
+              cell->set_refine_flag();
+          }
+        tria.prepare_coarsening_and_refinement();
+        transfer.prepare(field);
+        tria.execute_coarsening_and_refinement();
+        field                = transfer.interpolate();
+        unsigned int kept    = 0;
+        bool         smooth  = true; // smooth components kept exactly
+        bool         damaged = true; // non-decreasing kept exactly
+        for (const auto &cell : tria.active_cell_iterators())
+          if (const auto was = old.find(cell->id()); was != old.end())
+            {
+              ++kept;
+              const auto &now = field[cell->active_cell_index()];
+              for (unsigned int q = 0; q < quadrature.size(); ++q)
+                {
+                  smooth  = smooth && now[2 * q] == was->second[2 * q];
+                  damaged = damaged && now[2 * q + 1] == was->second[2 * q + 1];
+                }
+            }
+        std::cout << "  keep unchanged cells " << keep << ": " << kept
+                  << " kept cells, smooth values unchanged " << smooth
+                  << std::endl;
+        CHECK(kept == 8);
+        CHECK(damaged);
+        CHECK(smooth == keep);
+      }
+  }
 } // namespace
 
 int
@@ -226,5 +293,6 @@ main(int argc, char *argv[])
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   run(1);
   run(2);
+  run_kept_cells();
   return amfrac_test::summary();
 }

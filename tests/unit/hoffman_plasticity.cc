@@ -9,7 +9,9 @@
 //     reloading is elastic up to the stress reached before and yields
 //     there;
 //   - below yield the stress is exactly D (eps - eps_p), as without
-//     plasticity.
+//     plasticity;
+//   - at a converged plastic state the (elastic) response carries the
+//     continuum elastic-plastic tangent, the limit of the consistent one.
 // The uniaxial paths are driven by one strain component with the other
 // five solved for zero stress by Newton with the tangent, which checks the
 // tangent along the way.
@@ -162,6 +164,26 @@ namespace
               << ": |FD - tangent| / |tangent| = " << worst / largest
               << std::endl;
     CHECK(worst < 1e-5 * largest);
+
+    // From the converged state (on its yield surface) the response is
+    // elastic and its tangent the continuum one, which the consistent
+    // tangent of a vanishing further plastic step approaches.
+    const auto on = m.respond(strain, r.state);
+    CHECK(!on.plastic && on.on_surface);
+    Voigt further = strain;
+    for (unsigned int i = 0; i < 6; ++i)
+      further[i]
+        += 1e-9 * (r.state.plastic_strain[i] - state.plastic_strain[i]);
+    const auto next = m.respond(further, r.state);
+    CHECK(next.plastic);
+    double difference = 0;
+    for (unsigned int i = 0; i < 6; ++i)
+      for (unsigned int j = 0; j < 6; ++j)
+        difference = std::max(difference,
+                              std::abs(on.tangent[i][j] - next.tangent[i][j]));
+    CHECK(difference < 1e-6 * largest);
+    // A virgin point is never on its surface.
+    CHECK(!m.respond(Voigt{}, HoffmanPlasticity::State()).on_surface);
   }
 
   /** Transverse tension with hardening: load into plasticity, unload to

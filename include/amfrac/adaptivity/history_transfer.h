@@ -51,11 +51,15 @@ namespace amfrac
     using Field = std::vector<std::vector<double>>;
 
     /** @p degree is that of the recovery space (that of the displacement
-     * is the natural choice); one rule per history component. */
+     * is the natural choice); one rule per history component. With
+     * @p keep_unchanged_cells, a cell the mesh change keeps keeps its
+     * values exactly in every component (the projection is used only
+     * where cells are refined or coarsened). */
     QuadratureHistoryTransfer(const Triangulation<dim> &triangulation,
                               const unsigned int        degree,
                               const Quadrature<dim>    &quadrature,
-                              const std::vector<Rule>  &rules);
+                              const std::vector<Rule>  &rules,
+                              const bool keep_unchanged_cells = false);
 
     /** Project the smooth components to nodes and remember the others;
      * the refine and coarsen flags must be set (and final). */
@@ -78,6 +82,7 @@ namespace amfrac
     const Triangulation<dim>           &triangulation;
     const Quadrature<dim>               quadrature;
     const std::vector<Rule>             rules;
+    const bool                          keep_unchanged_cells;
     std::vector<unsigned int>           smooth;
     TiedCopyDoFs<dim>                   recovery;
     std::vector<dealii::Vector<double>> old_copies;

@@ -5,6 +5,16 @@
 
 namespace amfrac
 {
+  /** a . b of two Voigt vectors. */
+  inline double
+  voigt_dot(const std::array<double, 6> &a, const std::array<double, 6> &b)
+  {
+    double sum = 0;
+    for (unsigned int i = 0; i < 6; ++i)
+      sum += a[i] * b[i];
+    return sum;
+  }
+
   /**
    * Hoffman anisotropic plasticity at one point, in the ply's material
    * axes (the seed's "non-linear material properties using the Hoffman
@@ -45,6 +55,11 @@ namespace amfrac
       Stiffness tangent{};
       State     state;
       bool      plastic = false;
+      /** An elastic response of a point that has yielded and sits on its
+       * yield surface (to 1e-8): the tangent is the continuum elastic-
+       * plastic one, d sigma / d eps of further loading, so that a
+       * predictor from a converged plastic state continues plastically. */
+      bool on_surface = false;
       /** False if the local Newton did not converge (the caller cuts the
        * step). */
       bool converged = true;
@@ -57,10 +72,23 @@ namespace amfrac
 
     /** The stress, tangent and new history for the total strain
      * @p strain from the converged history @p old. A point that stays
-     * elastic returns C (strain - plastic strain) and C, computed exactly
-     * as without plasticity. */
+     * elastic (its trial stress within f <= 1e-10, the local Newton's
+     * tolerance of a point returned to the surface before) returns
+     * C (strain - plastic strain) and C, computed exactly as without
+     * plasticity. */
     Response
     respond(const Voigt &strain, const State &old) const;
+
+    /** C (strain - plastic strain of @p state), whatever the yield
+     * function says. */
+    Voigt
+    elastic_stress(const Voigt &strain, const State &state) const;
+
+    /** The continuum elastic-plastic tangent at @p stress on the yield
+     * surface of hardening state @p kappa:
+     * D - D n (D n)^T / (n.D n - df/dkappa |n|). */
+    Stiffness
+    continuum_tangent(const Voigt &stress, const double kappa) const;
 
     /** f(sigma, s). */
     double
@@ -69,7 +97,10 @@ namespace amfrac
   private:
     Stiffness D;
     Stiffness P;
+    /** D P and D q, which every local Newton iteration needs. */
+    Stiffness DP;
     Voigt     q{};
+    Voigt     Dq{};
     double    h;
 
     Voigt

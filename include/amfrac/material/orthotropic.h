@@ -34,6 +34,11 @@ namespace amfrac
     Strengths        strengths;
     /** Fracture energy of a crack inserted inside the ply [N/mm]. */
     double fracture_energy = 0.3;
+    /** Hoffman plasticity (Materials/Plasticity = hoffman): the strengths
+     * are the initial yield surface and grow by 1 + hardening x the
+     * equivalent plastic strain; false: elastic up to any stress. */
+    bool   plastic   = false;
+    double hardening = 0;
   };
 
   /**
@@ -73,6 +78,12 @@ namespace amfrac
   template <int dim>
   SymmetricTensor<4, dim>
   restrict_to_model(const SymmetricTensor<4, 3> &C);
+
+  /** The model-dimension part of a 3D laminate-axes tensor (the
+   * counterpart of embed_in_3d()). */
+  template <int dim>
+  SymmetricTensor<2, dim>
+  restrict_to_model(const SymmetricTensor<2, 3> &laminate);
 
   /** Embed a model-dimension strain into 3D laminate axes (plane strain:
    * zero strain components along the width direction). */

@@ -38,6 +38,10 @@ namespace amfrac
     double       density;
     /** Fracture energy of an inserted intra-ply crack [N/mm]. */
     double fracture_energy = 0;
+    /** Hoffman plasticity of the ply's material (false: elastic), and its
+     * isotropic hardening factor. */
+    bool   plastic   = false;
+    double hardening = 0;
     /** The plies of a homogenized laminate (2D in-plane model), bottom
      * first; empty otherwise. */
     std::vector<MembraneLayer> layers;
@@ -106,16 +110,15 @@ namespace amfrac
     return result;
   }
 
+  /** The stresses of the elastic strain @p elastic_strain (3D, laminate
+   * axes) of a ply (not a homogenized laminate). */
   template <int dim>
   PlyStress
-  evaluate_ply_stress(const PlyProperties<dim>      &ply,
-                      const SymmetricTensor<2, dim> &strain)
+  evaluate_ply_stress_3d(const PlyProperties<dim>    &ply,
+                         const SymmetricTensor<2, 3> &elastic_strain)
   {
-    if (!ply.layers.empty())
-      return evaluate_membrane_stress(ply, strain);
-    const SymmetricTensor<2, 3> laminate
-      = ply.stiffness_3d * embed_in_3d<dim>(strain);
-    PlyStress result;
+    const SymmetricTensor<2, 3> laminate = ply.stiffness_3d * elastic_strain;
+    PlyStress                   result;
     for (unsigned int a = 0; a < 3; ++a)
       for (unsigned int b = a; b < 3; ++b)
         result.model[a][b]
@@ -123,5 +126,21 @@ namespace amfrac
     result.material = to_material_axes(laminate, ply.rotation);
     result.hoffman  = hoffman_index(result.material, ply.strengths);
     return result;
+  }
+
+  /** The stresses of a model strain in a ply, less the plastic strain
+   * @p plastic (3D laminate axes; nullptr: none). */
+  template <int dim>
+  PlyStress
+  evaluate_ply_stress(const PlyProperties<dim>      &ply,
+                      const SymmetricTensor<2, dim> &strain,
+                      const SymmetricTensor<2, 3>   *plastic = nullptr)
+  {
+    if (!ply.layers.empty())
+      return evaluate_membrane_stress(ply, strain);
+    SymmetricTensor<2, 3> elastic = embed_in_3d<dim>(strain);
+    if (plastic)
+      elastic -= *plastic;
+    return evaluate_ply_stress_3d(ply, elastic);
   }
 } // namespace amfrac

@@ -452,7 +452,10 @@ namespace amfrac
       unsigned int dimension;
       /** Kinematics = total Lagrangian: Green-Lagrange strain and St
        * Venant-Kirchhoff plies on the Newton path; false: small strain. */
-      bool               total_lagrangian;
+      bool total_lagrangian;
+      /** Some ply's material has Materials/Plasticity = hoffman: the
+       * static Newton path with the plies' return mapping. */
+      bool               plastic_plies = false;
       Geometry           geometry;
       Materials          materials;
       Discretization     discretization;
@@ -497,6 +500,9 @@ namespace amfrac
       /** Inputs a linear buckling analysis cannot take (InputError). */
       void
       check_buckling_input() const;
+      /** Inputs plastic plies cannot take yet (InputError). */
+      void
+      check_plasticity_input() const;
       /** Inputs total Lagrangian kinematics cannot take yet (InputError). */
       void
       check_kinematics_input() const;

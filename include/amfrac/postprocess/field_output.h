@@ -35,6 +35,11 @@ namespace amfrac
     UpdateFlags
     get_needed_update_flags() const override;
 
+    /** The plastic strain of every active cell (3D, laminate axes; its
+     * mean over the cell's quadrature points), taken off the strain for
+     * the stresses; empty: none. */
+    std::vector<SymmetricTensor<2, 3>> plastic_strain;
+
   private:
     const std::vector<PlyProperties<dim>> &plies;
   };
@@ -73,6 +78,16 @@ namespace amfrac
     clear_cell_fields()
     {
       cell_fields.clear();
+      postprocessor.plastic_strain.clear();
+    }
+
+    /** Plastic plies: the cell means of the plastic strain (3D, laminate
+     * axes, every active cell), taken off the strain for the stresses of
+     * the following steps. */
+    void
+    set_plastic_strain(const std::vector<SymmetricTensor<2, 3>> &values)
+    {
+      postprocessor.plastic_strain = values;
     }
 
     /** Checkpoint: the VTU series written so far. */

@@ -27,8 +27,12 @@ namespace amfrac
       SymmetricTensor<2, 3> stress;
     };
 
+    /** @p plastic_strain: the plastic strain of every active cell (3D,
+     * laminate axes), taken off the strain for the stress; empty: none. */
     std::vector<Value>
-    evaluate(const dealii::Vector<double> &copy_values) const;
+    evaluate(const dealii::Vector<double>             &copy_values,
+             const std::vector<SymmetricTensor<2, 3>> &plastic_strain
+             = {}) const;
 
   private:
     /** The cell around @p p and the point's (projected) reference

@@ -2,9 +2,11 @@
 
 #include <amfrac/adaptivity/error_estimator.h>
 #include <amfrac/adaptivity/explicit_state_transfer.h>
+#include <amfrac/adaptivity/history_transfer.h>
 #include <amfrac/assembly/elastic_assembler.h>
 #include <amfrac/assembly/lever.h>
 #include <amfrac/assembly/loads.h>
+#include <amfrac/assembly/plastic_plies.h>
 #include <amfrac/assembly/total_lagrangian.h>
 #include <amfrac/checkpoint/checkpoint_store.h>
 #include <amfrac/cohesive/interface_assembler.h>
@@ -193,8 +195,17 @@ namespace amfrac
     ElasticAssembler<dim>                assembler;
     /** Kinematics = total Lagrangian (nullptr: small strain). */
     std::unique_ptr<TotalLagrangianAssembler<dim>> finite_strain;
-    Loads<dim>                                     loads;
-    double                                         estimated_stable_step = 0;
+    /** Plies with Materials/Plasticity = hoffman (nullptr: none). */
+    std::unique_ptr<PlasticPlies<dim>> plasticity;
+    /** Why the plies' return mapping failed in the last residual (empty
+     * if it did not), the same on every rank. */
+    std::string plastic_failure;
+    /** The residual of a state just moved to a new mesh: the plies'
+     * stress C (eps - eps_p) as transferred, without return mapping (the
+     * start of the trapezoidal rules of the next step). */
+    bool       as_transferred = false;
+    Loads<dim> loads;
+    double     estimated_stable_step = 0;
     /** Explicit mass scaling: the added mass [t] and the uniform factor
      * of all masses (1: none). */
     double                                   added_mass          = 0;
@@ -262,6 +273,10 @@ namespace amfrac
       Vector residual;
       Vector condensed_residual;
       Vector interface_force;
+      /** Plastic plies: int B^T (sigma - C eps) (ghost entries writable)
+       * and the plastic work of the run so far. */
+      Vector plastic_force;
+      double plastic_work = 0;
       Vector increment;
       /** Force scale of the convergence test (reactions and loads). */
       double force_scale = 0;
@@ -423,6 +438,10 @@ namespace amfrac
     /** Restore what save_newton() wrote, after setup_newton(). */
     void
     restore_newton(NewtonProgress &progress);
+    /** The plastic history of the owned cells from the checkpoint being
+     * resumed (whatever the number of ranks that wrote it). */
+    void
+    restore_plastic_history();
     /** The state of an explicit run that a checkpoint keeps: the time
      * steps done, the scalars of the ledger and the vectors, by name. */
     struct ExplicitState
@@ -580,6 +599,10 @@ namespace amfrac
                         const double       t,
                         const bool         by_estimate,
                         const double       zz_relative);
+    /** Plastic plies: tau_1 of the plastic history prepared for the
+     * flags set on the mesh (nullptr without plastic plies). */
+    std::unique_ptr<QuadratureHistoryTransfer<dim>>
+    prepare_plastic_transfer() const;
     /** Rebuild everything that depends on the mesh. */
     void
     setup_after_refinement();
@@ -841,6 +864,15 @@ namespace amfrac
     double
     update_residual(const Vector                   &trial,
                     TrilinosWrappers::SparseMatrix *tangent);
+    /** Plastic plies: NewtonState::plastic_force (and the tangent's
+     * correction) of relevant_solution; false, with plastic_failure set
+     * on every rank, if the return mapping failed anywhere (collective). */
+    bool
+    add_plastic_correction(TrilinosWrappers::SparseMatrix *tangent);
+    /** Plastic plies: the converged step's state (solution) becomes the
+     * history, its plastic work goes to the run's total. */
+    void
+    commit_plastic_state();
     std::vector<std::pair<std::string, double>>
     energy_ledger();
     std::vector<std::vector<double>>

@@ -1,0 +1,33 @@
+#pragma once
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/vector.h>
+#include <vector>
+
+namespace amfrac
+{
+  using namespace dealii;
+
+  /** The gradient of the displacement at every quadrature point of the
+   * cell @p fe_values was reinitialized on, from its nodal values @p u
+   * (a primitive vector element: shape i moves component c_i only). */
+  template <int dim>
+  void
+  displacement_gradients(const FEValues<dim>          &fe_values,
+                         const dealii::Vector<double> &u,
+                         std::vector<Tensor<2, dim>>  &gradients)
+  {
+    const auto &fe = fe_values.get_fe();
+    gradients.resize(fe_values.n_quadrature_points);
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        gradients[q] = 0;
+        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+          {
+            const unsigned int c = fe.system_to_component_index(i).first;
+            gradients[q][c] += u(i) * fe_values.shape_grad(i, q);
+          }
+      }
+  }
+} // namespace amfrac

@@ -1,0 +1,289 @@
+// Hoffman plasticity of the plies (Materials/Plasticity = hoffman) on
+// scenes:
+//   uniaxial D S H  a cube of one ply (tests/app/plastic_block.prm) in
+//                   uniaxial stress along material direction D = 1, 2, 3,
+//                   in tension (S = t) or compression (S = c), hardening
+//                   H: the force follows E eps A up to the strength of
+//                   that direction and then the hardening line
+//                   sigma = X (1 + H r eps) / (1 + H r X / E) exactly
+//                   (r = |grad F| / |dF/dsigma_D| of the Hoffman function
+//                   F at the uniaxial strength: kappa = r |eps_p,D|), so
+//                   every direction yields at its strength (1e-6); the
+//                   plastic work closes the energy balance (1e-6 of the
+//                   work);
+//   cycle           load, unload and reload the 90 degree cube: unloading
+//                   is elastic with the elastic stiffness and no point
+//                   yields, reloading is elastic up to the force reached
+//                   before, then follows the monotonic curve;
+//   beam            the adaptive plastic beam (prm/plastic_beam_2d.prm):
+//                   its final force and plastic work within 0.5 % and 1 %
+//                   of uniform refinement's limit, the balance to
+//                   round-off, kappa never lowered by a mesh change;
+//   identity        the DCB with plasticity on but strengths no iterate
+//                   reaches gives the elastic run's history.csv bit for
+//                   bit (the plastic columns zero).
+#include "../check.h"
+#include "scene.h"
+
+#include <amfrac/material/orthotropic.h>
+
+using namespace amfrac;
+using namespace amfrac_test;
+
+namespace
+{
+  /** The default material of the scenes (parameters.cc): strengths and
+   * moduli in material axes. */
+  const double E[3]        = {135000, 10000, 10000};
+  const double tension[3]  = {2000, 50, 50};
+  const double compress[3] = {1200, 200, 200};
+
+  /** grad F of the Hoffman function (reference README section 4) at the
+   * uniaxial stress @p sigma along material axis @p d (normal
+   * components; the shear ones vanish). */
+  std::array<double, 3>
+  hoffman_gradient(const unsigned int d, const double sigma)
+  {
+    double XX[3], C[3], linear[3];
+    for (unsigned int a = 0; a < 3; ++a)
+      {
+        XX[a]     = 1. / (tension[a] * compress[a]);
+        linear[a] = 1. / tension[a] - 1. / compress[a];
+      }
+    C[0] = 0.5 * (XX[1] + XX[2] - XX[0]); // (s2 - s3)^2
+    C[1] = 0.5 * (XX[2] + XX[0] - XX[1]); // (s3 - s1)^2
+    C[2] = 0.5 * (XX[0] + XX[1] - XX[2]); // (s1 - s2)^2
+    std::array<double, 3> s{};
+    s[d] = sigma;
+    return {{-2 * C[1] * (s[2] - s[0]) + 2 * C[2] * (s[0] - s[1]) + linear[0],
+             2 * C[0] * (s[1] - s[2]) - 2 * C[2] * (s[0] - s[1]) + linear[1],
+             -2 * C[0] * (s[1] - s[2]) + 2 * C[1] * (s[2] - s[0]) + linear[2]}};
+  }
+
+  /** |sigma| of the uniaxial path at total strain magnitude @p eps. */
+  double
+  uniaxial_stress(const unsigned int d,
+                  const bool         tensile,
+                  const double       hardening,
+                  const double       eps)
+  {
+    const double X = tensile ? tension[d] : compress[d];
+    if (E[d] * eps <= X)
+      return E[d] * eps;
+    const auto   n = hoffman_gradient(d, tensile ? X : -X);
+    const double r
+      = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) / std::abs(n[d]);
+    return X * (1 + hardening * r * eps) / (1 + hardening * r * X / E[d]);
+  }
+
+  /** The appended text that loads the cube along material axis @p d. */
+  std::string
+  loading(const unsigned int d, const std::string &displacement)
+  {
+    // Direction 2 is the 90 degree ply along x; direction 3 pulls z+.
+    std::string text = "subsection Geometry\n set Stacking sequence = "
+                       + std::string(d == 1 ? "[90]" : "[0]") + "\nend\n";
+    text += "subsection Boundary conditions\n";
+    if (d == 2)
+      text += " subsection x+\n  set Type = free\n end\n"
+              " subsection z+\n  set Type = displacement\n"
+              "  set Components = z\n  set Displacement = "
+              + displacement + "\n end\n";
+    else
+      text
+        += " subsection x+\n  set Displacement = " + displacement + "\n end\n";
+    return text + "end\n";
+  }
+
+  void
+  uniaxial(const std::string &file,
+           const unsigned int d,
+           const bool         tensile,
+           const double       hardening)
+  {
+    const double strain = tensile ? 0.03 : -0.03;
+    // 2 to 3 times the yield strain along the fibres, 2.5 to 10 times
+    // across them.
+    const double       amplitude = d == 0 ? strain : 5. / 3 * strain;
+    std::ostringstream appended;
+    appended << loading(d, std::to_string(amplitude) + "*t")
+             << "subsection Materials\n set Hardening = " << hardening
+             << "\nend\nsubsection Output\n set Directory = "
+             << "output-plastic-uniaxial-" << d << tensile << hardening
+             << "\nend\n";
+    const auto        run   = run_scene<3>(file, appended.str());
+    const History    &h     = run->history();
+    const std::string force = d == 2 ? "reaction_z+_z" : "reaction_x+_x";
+    unsigned int      plastic_steps = 0;
+    for (std::size_t r = 0; r < h.n_rows(); ++r)
+      {
+        const double eps      = std::abs(amplitude) * h.value(r, "time");
+        const double expected = uniaxial_stress(d, tensile, hardening, eps);
+        CHECK_CLOSE(std::abs(h.value(r, force)) / expected, 1., 1e-6);
+        CHECK(h.value(r, force) * amplitude > 0);
+        const bool yielding = h.value(r, "yielding_points") > 0;
+        plastic_steps += yielding;
+        CHECK(yielding == (E[d] * eps > expected * (1 + 1e-9)));
+        CHECK(std::abs(h.value(r, "balance_error"))
+              <= 1e-6 * h.value(r, "external_work"));
+      }
+    CHECK(plastic_steps >= 5);
+    std::cout << "direction " << d + 1
+              << (tensile ? " tension" : " compression") << ", hardening "
+              << hardening << ": plateau "
+              << std::abs(h.value(h.n_rows() - 1, force)) << " N, "
+              << plastic_steps << " plastic steps, plastic work "
+              << h.value(h.n_rows() - 1, "plastic_work") << " N mm"
+              << std::endl;
+  }
+
+  void
+  cycle(const std::string &file)
+  {
+    // 0 -> 0.01 -> 0 -> 0.015 along the 90 degree ply (Yt = 50), 35 steps.
+    const double       amplitude = 0.01, hardening = 1;
+    std::ostringstream appended;
+    appended << loading(1, "0.01*if(t<=1, t, if(t<=2, 2-t, t-2))")
+             << "subsection Materials\n set Hardening = " << hardening
+             << "\nend\nsubsection Time\n set End time = 3.5\n"
+                " set Number of steps = 35\nend\n"
+                "subsection Output\n set Directory = output-plastic-cycle\n"
+                "end\n";
+    const auto     run = run_scene<3>(file, appended.str());
+    const History &h   = run->history();
+    const auto     at  = [&](const std::size_t r) {
+      return std::make_pair(h.value(r, "time"), h.value(r, "reaction_x+_x"));
+    };
+    std::size_t peak = 0;
+    while (h.value(peak, "time") < 1 - 1e-9)
+      ++peak;
+    const double peak_force = at(peak).second;
+    CHECK(h.value(peak, "yielding_points") > 0);
+    CHECK_CLOSE(peak_force / uniaxial_stress(1, true, hardening, amplitude),
+                1.,
+                1e-6);
+    for (std::size_t r = peak + 1; r < h.n_rows(); ++r)
+      {
+        const auto [t, force] = at(r);
+        const double eps      = amplitude * (t <= 2 ? 2 - t : t - 2);
+        // Elastic from the peak (unloading, and reloading below it), or
+        // on the monotonic curve beyond it.
+        const double elastic   = peak_force - E[1] * (amplitude - eps);
+        const double monotonic = uniaxial_stress(1, true, hardening, eps);
+        const bool   beyond    = t > 3 + 1e-9;
+        CHECK_CLOSE(force / (beyond ? monotonic : elastic), 1., 1e-6);
+        // (At t = 3 the strain is back at its largest: yielding or not.)
+        if (std::abs(t - 3) > 1e-9)
+          CHECK((h.value(r, "yielding_points") > 0) == beyond);
+      }
+    // Back at zero displacement the ply is in compression (its plastic
+    // strain), elastic: -E2 eps_p.
+    std::size_t zero = peak;
+    while (h.value(zero, "time") < 2 - 1e-9)
+      ++zero;
+    CHECK(at(zero).second < 0);
+    std::cout << "cycle: peak " << peak_force << " N, at zero displacement "
+              << at(zero).second << " N, final " << at(h.n_rows() - 1).second
+              << " N" << std::endl;
+  }
+
+  void
+  elastic_identity(const std::string &file, const std::string &short_run)
+  {
+    // Strengths ten times the defaults: no iterate reaches them.
+    const std::string strengths
+      = "subsection Materials\n set Xt = 20000\n set Xc = 12000\n"
+        " set Yt = 500\n set Yc = 2000\n set Zt = 500\n set Zc = 2000\n"
+        " set S12 = 800\n set S13 = 800\n set S23 = 600\nend\n";
+    const std::string common
+      = file_text(short_run) + strengths
+        + "subsection Output\n set Directory = output-plastic-identity\nend\n";
+    const auto elastic = run_scene<2>(file, common);
+    const auto plastic = run_scene<2>(
+      file, common + "subsection Materials\n set Plasticity = hoffman\nend\n");
+    const History &a = elastic->history(), &b = plastic->history();
+    CHECK(a.n_rows() == b.n_rows() && a.n_rows() > 50);
+    unsigned int compared = 0, different = 0;
+    for (const auto &column : a.column_names())
+      for (std::size_t r = 0; r < std::min(a.n_rows(), b.n_rows()); ++r)
+        {
+          ++compared;
+          different += a.value(r, column) != b.value(r, column);
+        }
+    CHECK(different == 0);
+    CHECK(largest(b, "plastic_work") == 0);
+    CHECK(largest(b, "yielding_points") == 0);
+    std::cout << "identity: " << compared << " values compared, " << different
+              << " different" << std::endl;
+  }
+  /** The adaptive plastic beam (prm/plastic_beam_2d.prm) against the
+   * Richardson extrapolation of uniformly refined meshes, and what its
+   * mesh changes keep. */
+  void
+  beam(const std::string &file)
+  {
+    // Final force and plastic work of this scene on uniform meshes of
+    // 48 x 1 ... 384 x 8 cells per ply (2026-12-02, Release, same code):
+    // 20.385, 19.749, 19.581, 19.530 N and 0.8369, 0.8112, 0.8054,
+    // 0.8043 N mm; extrapolated with the observed rates: 19.51 N and
+    // 0.8040 N mm.
+    const double reference_force = 19.51, reference_work = 0.8040;
+    const auto   run
+      = run_scene<2>(file,
+                     "subsection Output\n set Field format = none\n"
+                     " set Directory = output-plastic-beam\nend\n");
+    const History &h     = run->history();
+    const auto     last  = h.n_rows() - 1;
+    const double   force = h.value(last, "force_y+");
+    const double   work  = h.value(last, "plastic_work");
+    CHECK(std::abs(force / reference_force - 1) < 0.005);
+    CHECK(std::abs(work / reference_work - 1) < 0.01);
+    CHECK(largest(h, "balance_error") < 1e-8 * h.value(last, "external_work"));
+    CHECK(h.value(last, "yielding_points") > 0);
+    for (std::size_t r = 1; r < h.n_rows(); ++r)
+      CHECK(h.value(r, "max_equivalent_plastic_strain")
+            >= h.value(r - 1, "max_equivalent_plastic_strain"));
+    // Every mesh change keeps the largest kappa (refinement injects it,
+    // kept cells keep theirs) and the finest mesh has fewer cells than
+    // the uniform 192 x 4 one (6,144) that is farther from the reference.
+    const History *changes = run->adaptivity_history();
+    CHECK(changes && changes->n_rows() >= 5);
+    for (std::size_t r = 0; changes && r < changes->n_rows(); ++r)
+      CHECK(changes->value(r, "max_equivalent_plastic_strain_after")
+            == changes->value(r, "max_equivalent_plastic_strain_before"));
+    const double cells
+      = changes ? changes->value(changes->n_rows() - 1, "cells") : 0;
+    CHECK(cells < 6144);
+    std::cout << "beam: force " << force << " N ("
+              << 100 * (force / reference_force - 1) << " %), plastic work "
+              << work << " N mm (" << 100 * (work / reference_work - 1)
+              << " %), " << cells << " cells, balance "
+              << largest(h, "balance_error") << std::endl;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const std::string                what = argc > 1 ? argv[1] : "";
+  if (what == "uniaxial" && argc == 6)
+    uniaxial(argv[2],
+             std::stoi(argv[3]) - 1,
+             std::string(argv[4]) == "t",
+             std::stod(argv[5]));
+  else if (what == "cycle" && argc == 3)
+    cycle(argv[2]);
+  else if (what == "beam" && argc == 3)
+    beam(argv[2]);
+  else if (what == "identity" && argc == 4)
+    elastic_identity(argv[2], argv[3]);
+  else
+    {
+      std::cerr << "usage: app_plasticity uniaxial FILE D t|c H | cycle FILE "
+                   "| beam FILE | identity DCB SHORT"
+                << std::endl;
+      return 2;
+    }
+  return summary();
+}
