@@ -207,11 +207,13 @@ namespace amfrac
     response.tangent  = D;
     response.state    = old;
     // A point returned to the surface before sits on it to the local
-    // Newton's tolerance: reloading it by nothing is not yielding.
-    const double f = yield_function(trial, 1 + h * old.kappa);
-    if (f <= 1e-10)
+    // Newton's tolerance (1e-13 s^2): reloading it by a margin of 1e-10
+    // s^2 is not yielding. f scales with s^2 = (1 + h kappa)^2.
+    const double s_old = 1 + h * old.kappa;
+    const double f     = yield_function(trial, s_old);
+    if (f <= 1e-10 * s_old * s_old)
       {
-        if (old.kappa > 0 && f >= -1e-8)
+        if (old.kappa > 0 && f >= -1e-8 * s_old * s_old)
           {
             response.on_surface = true;
             response.tangent    = continuum_tangent(trial, old.kappa);
@@ -243,8 +245,10 @@ namespace amfrac
         double r1 = 0;
         for (unsigned int i = 0; i < 6; ++i)
           r1 += R[i] * R[i];
+        // Relative tolerances: f scales with s^2, kappa grows.
         done = it > 0 && std::sqrt(r1) <= 1e-13 * scale
-               && std::abs(R[6]) <= 1e-13 && std::abs(R[7]) <= 1e-15;
+               && std::abs(R[6]) <= 1e-13 * s * s
+               && std::abs(R[7]) <= 1e-15 * std::max(1., kappa);
         auto &a = J.matrix;
         for (unsigned int i = 0; i < 6; ++i)
           {
@@ -260,7 +264,10 @@ namespace amfrac
         a[7][6] = -length;
         a[7][7] = 1 - dlambda * h * dot(n, q) / length;
         if (!J.factorize())
-          break;
+          {
+            done = false;
+            break;
+          }
         if (done)
           break;
         J.solve(R);

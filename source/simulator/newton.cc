@@ -301,7 +301,10 @@ namespace amfrac
     NewtonState &n = *newton;
     Vector       jump(solution);
     jump -= n.converged_solution;
-    update_residual(n.converged_solution, &system_matrix);
+    // A return mapping that failed at the converged state (a state moved
+    // to a new mesh may lie outside the yield surface) fails the step.
+    if (!std::isfinite(update_residual(n.converged_solution, &system_matrix)))
+      return std::numeric_limits<double>::quiet_NaN();
     Vector product(jump);
     tangent_product(jump, product);
     n.residual += product;
@@ -690,6 +693,8 @@ namespace amfrac
     // and cost several iterations even in an elastic step.
     double norm = predictor_residual();
     report.residuals.push_back(norm);
+    if (!std::isfinite(norm))
+      return report;
     // Relative to the external forces, or to the predictor's residual when
     // these vanish (a ply pulled off an open crack carries no load).
     const double first = norm;
@@ -1122,14 +1127,17 @@ namespace amfrac
                 if (!report.failure.empty())
                   message << "; " << report.failure;
                 if (!plastic_failure.empty())
-                  message << "; " << plastic_failure
-                          << ": the load may exceed the limit load of the "
-                             "plastic plies (with perfectly plastic plies, "
-                             "Materials/Hardening = 0, there is no "
-                             "equilibrium beyond it: prescribe "
-                             "displacements instead of loads), or a step "
-                             "asks for more plastic flow than the local "
-                             "Newton iteration follows";
+                  message
+                    << "; " << plastic_failure
+                    << (loads.empty() ?
+                          ": a step asks for more plastic flow than the "
+                          "local Newton iteration follows" :
+                          ": the loads may exceed the limit load of the "
+                          "plastic plies (with perfectly plastic plies, "
+                          "Materials/Hardening = 0, there is no "
+                          "equilibrium beyond it: prescribe displacements "
+                          "instead), or a step asks for more plastic flow "
+                          "than the local Newton iteration follows");
                 if (plastic_failure.empty()
                     && std::any_of(report.residuals.begin(),
                                    report.residuals.end(),

@@ -682,14 +682,7 @@ namespace amfrac
     if (plasticity)
       {
         plastic = plasticity->cell_means();
-        if (field_output)
-          {
-            field_output->set_plastic_strain(plastic.plastic_strain);
-            field_output->set_cell_field(
-              "equivalent_plastic_strain",
-              dealii::Vector<float>(plastic.kappa.begin(),
-                                    plastic.kappa.end()));
-          }
+        set_plastic_fields(plastic);
       }
     const auto values = probe->evaluate(copy_values, plastic.plastic_strain);
     for (unsigned int p = 0; p < values.size(); ++p)
@@ -707,17 +700,38 @@ namespace amfrac
 
     if (step % parameters.output.every_n_steps == 0
         || t >= parameters.time.end_time * (1 - 1e-12))
-      write_fields(step, t);
+      write_fields(step, t, false);
   }
 
 
 
   template <int dim>
   void
-  Simulator<dim>::write_fields(const unsigned int step, const double t)
+  Simulator<dim>::set_plastic_fields(
+    const typename PlasticPlies<dim>::CellMeans &means)
   {
     if (!field_output)
       return;
+    field_output->set_plastic_strain(means.plastic_strain);
+    field_output->set_cell_field("equivalent_plastic_strain",
+                                 dealii::Vector<float>(means.kappa.begin(),
+                                                       means.kappa.end()));
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_fields(const unsigned int step,
+                               const double       t,
+                               const bool         update_plastic)
+  {
+    if (!field_output)
+      return;
+    // (A mesh change or a restart cleared them; postprocess() has just
+    // set them.)
+    if (plasticity && update_plastic)
+      set_plastic_fields(plasticity->cell_means());
     dof_layer.expand(relevant_solution, copy_values);
     // Adaptive cycles continue the series: cycle c is shown at times
     // c * End time + t.

@@ -15,6 +15,10 @@
 //                   is elastic with the elastic stiffness and no point
 //                   yields, reloading is elastic up to the force reached
 //                   before, then follows the monotonic curve;
+//   rotated         a 30 degree ply under homogeneous uniaxial strain
+//                   yields where the Hoffman index of its elastic stress in
+//                   the ply axes reaches 1 and then stays on the surface
+//                   (the stress from the reactions, the index to 1e-6);
 //   beam            the adaptive plastic beam (prm/plastic_beam_2d.prm):
 //                   its final force and plastic work within 0.5 % and 1 %
 //                   of uniform refinement's limit, the balance to
@@ -216,6 +220,81 @@ namespace
     std::cout << "identity: " << compared << " values compared, " << different
               << " different" << std::endl;
   }
+  /** A 30 degree ply under the homogeneous uniaxial strain eps_xx = a t
+   * (every face holds u = (a t x, 0, 0)): the stress, read from the
+   * reactions of the x+, y+ and z+ faces, yields where the Hoffman index
+   * of the elastic stress in the ply axes reaches 1, and then stays on
+   * the surface (perfect plasticity: index 1). The index is computed here
+   * with the rotation of the ply, so a plastic ply that rotates the wrong
+   * way (R for R^T) puts its stress on another surface. */
+  void
+  rotated(const std::string &file)
+  {
+    const double amplitude = 0.02;
+    std::string  faces;
+    for (const char *face : {"x-", "x+", "y-", "y+", "z-", "z+"})
+      faces += std::string(" subsection ") + face
+               + "\n  set Type = displacement\n  set Components = x, y, z\n"
+                 "  set Displacement = 0.02*t*x; 0; 0\n end\n";
+    const std::string appended
+      = "subsection Geometry\n set Stacking sequence = [30]\nend\n"
+        "subsection Boundary conditions\n"
+        + faces
+        + "end\nsubsection Time\n set Number of steps = 20\nend\n"
+          "subsection Output\n set Directory = output-plastic-rotated\n"
+          "end\n";
+    const auto     run = run_scene<3>(file, appended);
+    const History &h   = run->history();
+    // The default material (parameters.cc) at 30 degrees.
+    ElasticConstants c;
+    c.E1 = E[0], c.E2 = E[1], c.E3 = E[2];
+    c.G12 = 5000, c.G13 = 5000, c.G23 = 3448;
+    c.nu12 = 0.3, c.nu13 = 0.3, c.nu23 = 0.45;
+    Strengths f;
+    f.Xt = tension[0], f.Yt = tension[1], f.Zt = tension[2];
+    f.Xc = compress[0], f.Yc = compress[1], f.Zc = compress[2];
+    f.S12 = 80, f.S13 = 80, f.S23 = 60;
+    const Tensor<2, 3>          R = ply_rotation(30);
+    const SymmetricTensor<4, 3> C = rotate(stiffness_in_material_axes(c), R);
+    SymmetricTensor<2, 3>       unit_strain;
+    unit_strain[0][0]                       = amplitude;
+    const SymmetricTensor<2, 3> unit_stress = C * unit_strain;
+    // index(t) = a2 t^2 + a1 t for the elastic stress t * unit_stress.
+    const double i1 = hoffman_index(to_material_axes(unit_stress, R), f);
+    const double i2 = hoffman_index(to_material_axes(2. * unit_stress, R), f);
+    const double a2 = 0.5 * i2 - i1, a1 = 2 * i1 - 0.5 * i2;
+    const double onset         = (-a1 + std::sqrt(a1 * a1 + 4 * a2)) / (2 * a2);
+    unsigned int plastic_steps = 0;
+    double       worst         = 0;
+    for (std::size_t r = 0; r < h.n_rows(); ++r)
+      {
+        const double          t = h.value(r, "time");
+        SymmetricTensor<2, 3> stress;
+        stress[0][0]          = h.value(r, "reaction_x+_x");
+        stress[0][1]          = h.value(r, "reaction_x+_y");
+        stress[0][2]          = h.value(r, "reaction_x+_z");
+        stress[1][1]          = h.value(r, "reaction_y+_y");
+        stress[1][2]          = h.value(r, "reaction_y+_z");
+        stress[2][2]          = h.value(r, "reaction_z+_z");
+        const double index    = hoffman_index(to_material_axes(stress, R), f);
+        const bool   yielding = h.value(r, "yielding_points") > 0;
+        CHECK(yielding == (t > onset));
+        if (yielding)
+          {
+            ++plastic_steps;
+            worst = std::max(worst, std::abs(index - 1));
+          }
+        else
+          CHECK_CLOSE(index, a2 * t * t + a1 * t, 1e-8);
+      }
+    CHECK(plastic_steps >= 5);
+    CHECK(worst < 1e-6);
+    std::cout << "30 degree ply: yields at t = " << onset << ", "
+              << plastic_steps
+              << " plastic steps, largest |Hoffman index - 1| there " << worst
+              << std::endl;
+  }
+
   /** The adaptive plastic beam (prm/plastic_beam_2d.prm) against the
    * Richardson extrapolation of uniformly refined meshes, and what its
    * mesh changes keep. */
@@ -276,12 +355,14 @@ main(int argc, char **argv)
     cycle(argv[2]);
   else if (what == "beam" && argc == 3)
     beam(argv[2]);
+  else if (what == "rotated" && argc == 3)
+    rotated(argv[2]);
   else if (what == "identity" && argc == 4)
     elastic_identity(argv[2], argv[3]);
   else
     {
       std::cerr << "usage: app_plasticity uniaxial FILE D t|c H | cycle FILE "
-                   "| beam FILE | identity DCB SHORT"
+                   "| rotated FILE | beam FILE | identity DCB SHORT"
                 << std::endl;
       return 2;
     }

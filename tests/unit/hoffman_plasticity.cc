@@ -260,6 +260,9 @@ main()
       check_yield(5, 1, f.S12, 5000, h);
       check_tangent(h);
     }
+  // Strong hardening (h kappa about 20 at the end in transverse
+  // compression): the local Newton's tolerances scale with s^2.
+  check_yield(1, -1, f.Yc, 10000, 500.);
   check_cycle();
   check_elastic();
   return amfrac_test::failures;

@@ -259,6 +259,13 @@ namespace
       if (cell->is_locally_owned())
         copy2.set_cell_values(cell, owned.data() + width * c++);
     CHECK(copy2.owned_values() == owned);
+
+    // Loading again beyond the last plastic state: every point of the
+    // plastic ply yields, none of the elastic one is visited.
+    Vector previous(u);
+    stretch(dofs, 0.03, 1e-4, u, d);
+    plastic.commit(ghosted(dofs, u), ghosted(dofs, previous));
+    CHECK(plastic.yielding_points() == 2 * plastic.n_points());
   }
 } // namespace
 

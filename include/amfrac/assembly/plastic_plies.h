@@ -29,9 +29,9 @@ namespace amfrac
    *
    * sigma(u) from the return mapping of the converged history, C_ep its
    * consistent tangent. A point that never yielded contributes exactly
-   * nothing (and is skipped), so a scene whose plies never reach their
-   * strengths gives the elastic result bit for bit; elastic plies are
-   * never visited.
+   * nothing (and is skipped), so a Newton-path scene whose plies never
+   * reach their strengths gives the elastic result bit for bit; elastic
+   * plies are never visited.
    *
    * Every evaluation starts from the converged history (backward Euler
    * over the whole step), so Newton iterations and line searches may

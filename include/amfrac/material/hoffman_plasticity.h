@@ -56,9 +56,10 @@ namespace amfrac
       State     state;
       bool      plastic = false;
       /** An elastic response of a point that has yielded and sits on its
-       * yield surface (to 1e-8): the tangent is the continuum elastic-
-       * plastic one, d sigma / d eps of further loading, so that a
-       * predictor from a converged plastic state continues plastically. */
+       * yield surface (-1e-8 s^2 <= f <= 1e-10 s^2): the tangent is the
+       * continuum elastic-plastic one, d sigma / d eps of further
+       * loading, so that a predictor from a converged plastic state
+       * continues plastically. */
       bool on_surface = false;
       /** False if the local Newton did not converge (the caller cuts the
        * step). */
@@ -72,10 +73,10 @@ namespace amfrac
 
     /** The stress, tangent and new history for the total strain
      * @p strain from the converged history @p old. A point that stays
-     * elastic (its trial stress within f <= 1e-10, the local Newton's
-     * tolerance of a point returned to the surface before) returns
-     * C (strain - plastic strain) and C, computed exactly as without
-     * plasticity. */
+     * elastic (its trial stress within f <= 1e-10 s^2, a margin over the
+     * local Newton's tolerance 1e-13 s^2 of a point returned to the
+     * surface before) returns C (strain - plastic strain) and C, computed
+     * exactly as without plasticity. */
     Response
     respond(const Voigt &strain, const State &old) const;
 

@@ -885,9 +885,17 @@ namespace amfrac
                 const Vector                                      &residual,
                 const std::vector<std::pair<std::string, double>> &columns);
     /** Field output of step @p step (and the interface points) from
-     * relevant_solution, expanded to copy_values. */
+     * relevant_solution, expanded to copy_values; with @p update_plastic
+     * the plastic fields are evaluated first (postprocess() sets them
+     * itself). Collective. */
     void
-    write_fields(const unsigned int step, const double t);
+    write_fields(const unsigned int step,
+                 const double       t,
+                 const bool         update_plastic = true);
+    /** Plastic plies: the cell means of the plastic strain and kappa into
+     * the field output. */
+    void
+    set_plastic_fields(const typename PlasticPlies<dim>::CellMeans &means);
     /** Per prescribed condition, the force conjugate to the load
      * parameter t: sum_i R_i dg_i/dt (the load P for a displacement
      * +-P-conjugate opening, e.g. the DCB's arms opened by +-t/2). */
