@@ -1,10 +1,11 @@
 #!/usr/bin/python3
 """Plot of doc/tutorials/step-10-large-deformation: the delaminated [0_20]
-panel (prm/delaminated_panel.prm), total Lagrangian, displacement control:
-the axial force against the end shortening, and against the mid-length
-deflections of the sublaminate's top and the base's bottom, with the local
-buckling load of the linear analysis of the pre-buckled state
-(prm/delaminated_panel_2d.prm).
+panel (prm/delaminated_panel.prm), total Lagrangian, displacement control
+up to the growth of the delamination and opening control through it: the
+axial force against the end shortening, against the mid-length
+deflections of the sublaminate's top and the base's bottom, and against
+the debonded length, with the local buckling load of the linear analysis
+of the pre-buckled state (prm/delaminated_panel_2d.prm).
 usage: plot_panel.py HISTORY.csv OUT.png"""
 import csv
 import sys
@@ -24,7 +25,8 @@ def main():
     force = [-float(r["reaction_x+_x"]) for r in rows]
     sub = [float(r["p0_uy"]) for r in rows]
     base = [float(r["p1_uy"]) for r in rows]
-    fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4))
+    debonded = [float(r["debonded_i15"]) for r in rows]
+    fig, (left, right, growth) = plt.subplots(1, 3, figsize=(15, 4))
     left.plot([0] + [0.01 * x for x in t], [0] + force, "o-", ms=3)
     left.axhline(185.4, color="k", ls=":", lw=0.8)
     left.text(0.005, 195, "local, linear buckling: 185.4 N/mm")
@@ -39,6 +41,10 @@ def main():
     right.set_xlabel("out-of-plane deflection [mm]")
     right.set_ylabel("axial force N [N/mm]")
     right.legend(loc="lower right")
+    growth.plot(debonded, force, "o-", ms=3)
+    growth.set_xlabel("debonded length of the interface [mm]")
+    growth.set_ylabel("axial force N [N/mm]")
+    growth.set_title("the growth (opening control)", fontsize=10)
     fig.tight_layout()
     fig.savefig(out, dpi=110)
 

@@ -1425,7 +1425,9 @@ namespace amfrac
                         "Energy dissipated per step under dissipation "
                         "control, in N mm (N mm per mm of width in 2D); "
                         "also the threshold at which a displacement step "
-                        "switches to it (or to opening control).");
+                        "switches to it (or to opening control): the "
+                        "fracture energy the cohesive interfaces dissipate "
+                        "in that step, from their own ledger.");
       prm.declare_entry("Arc-length psi",
                         "0",
                         Patterns::Double(0),
@@ -1440,6 +1442,15 @@ namespace amfrac
                         "Control = arc-length: the run ends after this "
                         "many steps even if t has not reached End time "
                         "(a path that turns back).");
+      prm.declare_entry("Maximum steps",
+                        "0",
+                        Patterns::Integer(0),
+                        "Static runs on the Newton path, any Control: the "
+                        "run ends after this many converged steps even if "
+                        "t has not reached End time (0: no limit). Under "
+                        "dissipation or opening control t may stay nearly "
+                        "constant while a delamination grows; this ends "
+                        "such a run after a chosen number of steps.");
       prm.declare_entry("Opening increment",
                         "0.01",
                         Patterns::Double(0),
@@ -1469,6 +1480,7 @@ namespace amfrac
       arc_length            = prm.get("Control") == "arc-length";
       arc_length_psi        = prm.get_double("Arc-length psi");
       max_arc_length_steps  = prm.get_integer("Maximum arc-length steps");
+      max_steps             = prm.get_integer("Maximum steps");
       prm.leave_subsection();
       require(tolerance > 0,
               "Nonlinear solver/Residual tolerance",

@@ -504,6 +504,10 @@ namespace amfrac
         n.increment.add(dt, n.load_pattern);
         solution += n.increment;
         t += dt;
+        // The first iterate, linearized at the converged state, may
+        // overshoot and come back.
+        if (it > 0 && std::abs(t - t0) > 4 * path_step_bound())
+          return report;
       }
   }
 
@@ -660,6 +664,10 @@ namespace amfrac
         n.increment.add(dt, direction);
         solution += n.increment;
         t += dt;
+        // The first iterate, linearized at the converged state, may
+        // overshoot and come back.
+        if (it > 0 && std::abs(t - t0) > 4 * path_step_bound())
+          return report;
       }
   }
 
@@ -854,6 +862,28 @@ namespace amfrac
 
   template <int dim>
   double
+  Simulator<dim>::path_step_bound() const
+  {
+    return 8 * parameters.time.end_time / parameters.time.n_steps;
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::interface_dissipation() const
+  {
+    double dissipated = 0;
+    if (interfaces)
+      for (const auto &l : interfaces->ledger(comm))
+        dissipated += l.dissipated;
+    return dissipated;
+  }
+
+
+
+  template <int dim>
+  double
   Simulator<dim>::add_interface_columns(
     std::vector<std::pair<std::string, double>> &columns)
   {
@@ -974,8 +1004,18 @@ namespace amfrac
                   << t << ", before End time" << std::endl;
             break;
           }
+        if (p.max_steps > 0 && step >= p.max_steps)
+          {
+            pcout << "  stopped after " << step
+                  << " steps (Nonlinear solver/Maximum steps) at t=" << t
+                  << ", before End time" << std::endl;
+            break;
+          }
         double       trial_t = t;
         NewtonReport report;
+        // Whether the step was taken by dissipation or opening control
+        // (not by the displacement step that replaces a failed one).
+        bool path_step = false;
         if (p.arc_length)
           {
             arc = arc == 0 ? newton->arc_nominal : arc;
@@ -991,14 +1031,12 @@ namespace amfrac
             // Where the structure stores rather than dissipates (elastic
             // reloading, the end of the crack) the constraint is nearly
             // singular and its step is huge or lands on a spurious branch
-            // (t < 0): take a displacement step instead. A long crack is
-            // compliant: a dissipation step of the DCB near its end moves t
-            // by 3-4 nominal steps, on a mesh refined through the
-            // thickness at the front more, so the bound on a regular step
-            // is 8 nominal steps.
+            // (t < 0), or moves t by more than path_step_bound(): take a
+            // displacement step instead.
             const bool regular = report.converged && trial_t >= 0
-                                 && std::abs(trial_t - t) <= 8 * nominal;
-            if (!regular || trial_t > end)
+                                 && std::abs(trial_t - t) <= path_step_bound();
+            path_step = regular && trial_t <= end;
+            if (!path_step)
               {
                 pcout << "  t=" << trial_t << ": " << control
                       << " control did not converge or left the path"
@@ -1023,9 +1061,10 @@ namespace amfrac
                           << "snap-back of the path; the run ends with the "
                           << control << " step that crosses it" << std::endl;
                     set_interface_time_step(nominal);
-                    report = p.opening_control ?
-                               solve_opening_step(t, dtau, trial_t, solver) :
-                               solve_dissipation_step(t, dtau, trial_t, solver);
+                    report    = p.opening_control ?
+                                  solve_opening_step(t, dtau, trial_t, solver) :
+                                  solve_dissipation_step(t, dtau, trial_t, solver);
+                    path_step = true;
                   }
               }
           }
@@ -1104,11 +1143,13 @@ namespace amfrac
               }
             std::ostringstream line;
             line << "  t=" << trial_t << ": Newton did not converge"
-                 << residual_list(report.residuals);
+                 << residual_list(report.residuals) << " (force scale "
+                 << newton->force_scale << ")";
             if (p.arc_length)
-              line << "; arc length cut to " << arc << " mm, i.e.";
-            pcout << line.str() << " (force scale " << newton->force_scale
-                  << "); step cut to " << dt
+              line << "; arc length cut to " << arc << " mm, a step of about";
+            else
+              line << "; step cut to";
+            pcout << line.str() << " " << dt << (p.arc_length ? " in t" : "")
                   << (by_dissipation ? " (and the " + control + " increment to "
                                          + std::to_string(dtau) + ")" :
                                        "")
@@ -1153,6 +1194,15 @@ namespace amfrac
               }
             continue;
           }
+        // The switch to dissipation or opening control measures what the
+        // interfaces dissipate, not the secant estimate (P0 t - P t0)/2 of
+        // solve_dissipation_step: that one is the dissipation only for a
+        // structure that unloads to the origin, and a buckling total
+        // Lagrangian panel or a yielded ply "dissipates" by it long before
+        // any interface softens.
+        const bool   may_switch = p.dissipation_control && !by_dissipation;
+        const double dissipated_before
+          = may_switch ? interface_dissipation() : 0.;
         if (interfaces)
           interfaces->commit();
         if (plasticity)
@@ -1165,13 +1215,13 @@ namespace amfrac
           std::ostringstream line;
           line << "  step " << step << " t=" << trial_t << ": " << its
                << " Newton iteration(s)"
-               << (by_dissipation ? " (" + control + " control)" : "")
+               << (path_step ? " (" + control + " control)" : "")
                << residual_list(report.residuals);
           pcout << line.str() << std::endl;
         }
         const double force = load_force(newton->residual);
-        if (p.dissipation_control && !by_dissipation
-            && 0.5 * (newton->converged_force * trial_t - force * t)
+        if (may_switch
+            && interface_dissipation() - dissipated_before
                  > p.dissipation_increment)
           {
             by_dissipation = true;
@@ -1188,6 +1238,12 @@ namespace amfrac
         t                          = trial_t;
         auto row                   = columns;
         row.emplace_back("newton_iterations", its);
+        // 0: a displacement step before the switch to dissipation or
+        // opening control, 1: a step taken by it, 2: a displacement step
+        // after the switch (where the path control failed or left the
+        // path).
+        if (p.dissipation_control)
+          row.emplace_back("path_control", may_switch ? 0 : path_step ? 1 : 2);
         postprocess(step, t, newton->residual, row);
         if (adaptive)
           adapt_during_history(step, t);

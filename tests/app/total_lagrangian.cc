@@ -14,9 +14,16 @@
 //   euler_mode <euler_strip_2d.prm>: the same with the imperfection seeded
 //     from the computed first buckling mode (Geometry/Imperfection mode).
 //   panel <delaminated_panel.prm>: the seed's panel with total Lagrangian
-//     kinematics and contact: local buckling of the sublaminate where the
-//     linear analysis' load and the imperfection put it, then global
-//     bending, no delamination growth up to the scene's end.
+//     kinematics and contact, under displacement control to 0.22 mm: local
+//     buckling of the sublaminate where the linear analysis' load and the
+//     imperfection put it, then global bending, no delamination growth.
+//   panel_growth <delaminated_panel.prm>: the scene's opening control
+//     past the limit load for 64 steps: the switch to it comes when the
+//     fronts dissipate (not when the buckled panel loses secant stiffness),
+//     the delamination starts to grow at the limit load, the path is followed
+//     back through the snap-back (t decreases), the fracture energy per new
+//     debonded length lies between G_Ic and G_IIc, the sublaminates do not
+//     interpenetrate, and the energy balances.
 #include "scene.h"
 
 #include <cmath>
@@ -145,7 +152,10 @@ namespace
   panel(const std::string &file)
   {
     const auto simulator = amfrac_test::run_scene<2>(
-      file, "subsection Output\n set Field format = none\nend\n");
+      file,
+      "subsection Output\n set Field format = none\nend\n"
+      "subsection Time\n set End time = 22\n set Number of steps = 44\nend\n"
+      "subsection Nonlinear solver\n set Control = displacement\nend\n");
     const History &history = simulator->history();
     const double   initial = history.value(0, "debonded_i15");
     double         before = 0, after = 1e300;
@@ -172,6 +182,68 @@ namespace
     CHECK(history.value(last, "p0_uy") > 1.);
     CHECK(history.value(last, "p1_uy") < -0.5);
   }
+
+  /** The panel past its limit load under opening control (see the file
+   * header). */
+  void
+  panel_growth(const std::string &file)
+  {
+    const auto simulator = amfrac_test::run_scene<2>(
+      file,
+      "subsection Output\n set Field format = none\nend\n"
+      "subsection Nonlinear solver\n set Maximum steps = 64\nend\n");
+    const History    &h    = simulator->history();
+    const std::size_t rows = h.n_rows();
+    const auto        N
+      = [&](const std::size_t r) { return -h.value(r, "reaction_x+_x"); };
+    const double initial = h.value(0, "debonded_i15");
+    std::size_t  peak = 0, growth = rows, path = rows;
+    for (std::size_t r = 0; r < rows; ++r)
+      {
+        if (path == rows && h.value(r, "path_control") != 0)
+          path = r;
+        if (N(r) > N(peak))
+          peak = r;
+        if (growth == rows && h.value(r, "debonded_i15") > initial + 0.2)
+          growth = r;
+        // Contact: at most a hundredth of a ply thickness of overlap.
+        CHECK(h.value(r, "min_opening_i15") > -0.01 * 0.127);
+      }
+    CHECK(growth < rows && path > 0 && path < rows);
+    // The switch to opening control follows the fronts' own dissipation
+    // (more than the Dissipation increment, 0.002 N mm, in the step
+    // before), not the secant estimate, which the buckled panel's loss of
+    // secant stiffness passes from t = 12 on (at 0.0017 N mm per step at
+    // the fronts).
+    CHECK(h.value(path - 1, "dissipated_i15")
+            - (path > 1 ? h.value(path - 2, "dissipated_i15") : 0.)
+          > 0.002);
+    const std::size_t last = rows - 1;
+    double            back = h.value(peak, "time");
+    for (std::size_t r = peak; r < rows; ++r)
+      back = std::min(back, h.value(r, "time"));
+    const double grown = h.value(last, "debonded_i15") - initial;
+    const double fracture
+      = (h.value(last, "dissipated_i15") - h.value(growth, "dissipated_i15"))
+        / (h.value(last, "debonded_i15") - h.value(growth, "debonded_i15"));
+    const double balance = std::abs(h.value(last, "balance_error"))
+                           / h.value(last, "external_work");
+    std::cout << "  limit load " << N(peak) << " N/mm at "
+              << 0.01 * h.value(peak, "time") << " mm; growth from "
+              << N(growth) << " N/mm; grown " << grown
+              << " mm; opening control from step " << path << " at "
+              << N(path - 1) << " N/mm; t back to " << back << " of "
+              << h.value(peak, "time") << "; " << fracture
+              << " N/mm dissipated per mm; balance " << balance << std::endl;
+    // The delamination grows at the limit load, not before or long after.
+    CHECK(N(growth) > 0.98 * N(peak));
+    CHECK(grown > 3.);
+    // Displacement control cannot return: the path went back in t.
+    CHECK(back < 0.97 * h.value(peak, "time"));
+    // Mixed-mode growth: between the mode I and mode II energies.
+    CHECK(fracture > 0.3 && fracture < 0.8);
+    CHECK(balance < 5e-3);
+  }
 } // namespace
 
 int
@@ -185,6 +257,8 @@ main(int argc, char *argv[])
     euler(argv[2], "");
   else if (what == "panel")
     panel(argv[2]);
+  else if (what == "panel_growth")
+    panel_growth(argv[2]);
   else if (what == "euler_mode")
     // The first buckling mode instead of its formula, with the same
     // largest displacement.
@@ -194,10 +268,9 @@ main(int argc, char *argv[])
           " set Imperfection amplitude = 0.01\nend\n");
   else
     {
-      std::cerr
-        << "usage: app_total_lagrangian rotation|euler|euler_mode|panel "
-           "FILE.prm"
-        << std::endl;
+      std::cerr << "usage: app_total_lagrangian "
+                   "rotation|euler|euler_mode|panel|panel_growth FILE.prm"
+                << std::endl;
       return 1;
     }
   return amfrac_test::failures;

@@ -327,6 +327,9 @@ namespace amfrac
       bool         arc_length = false;
       double       arc_length_psi;
       unsigned int max_arc_length_steps;
+      /** Any control on the Newton path: the run ends after this many
+       * converged steps (0: no limit). */
+      unsigned int max_steps = 0;
 
       static void
       declare_parameters(ParameterHandler &prm);

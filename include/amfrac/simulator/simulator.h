@@ -778,6 +778,17 @@ namespace amfrac
     /** The prescribed displacements at @p t into the supported dofs. */
     void
     impose_prescribed(const double t, Vector &u) const;
+    /** Dissipation and opening control: a step is regular while it moves
+     * t by at most this much (8 nominal steps: a long crack is compliant,
+     * a dissipation step of the DCB near its end moves t by 3-4, on a mesh
+     * refined through the thickness at the front more); an iterate four
+     * times as far is abandoned at once rather than iterated on. */
+    double
+    path_step_bound() const;
+    /** Fracture energy dissipated by all cohesive interfaces in their
+     * converged states (the ledger's "dissipated", summed over ranks). */
+    double
+    interface_dissipation() const;
     /** The per-interface ledger columns; returns the summed work of the
      * interface tractions. */
     double
