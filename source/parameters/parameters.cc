@@ -1588,6 +1588,17 @@ namespace amfrac
       check_arc_length_input();
       checkpoint.parse_parameters(prm, output.directory);
       cracks.parse_parameters(prm, geometry.plies.size());
+      // Only the Newton path counts its steps against the limit; a linear
+      // or explicit run would silently ignore it.
+      if (nonlinear_solver.max_steps > 0
+          && (time.explicit_dynamics
+              || (cohesive.interfaces.empty() && !cracks.active
+                  && !total_lagrangian && !plastic_plies)))
+        throw InputError("Nonlinear solver/Maximum steps",
+                         "ends runs on the static Newton path (cohesive "
+                         "interfaces, crack insertion, total Lagrangian "
+                         "kinematics or plastic plies), and this run is "
+                         "not one: shorten Time/End time instead");
       if (adaptivity.during_history() && cohesive.interfaces.empty()
           && ((!cracks.active && !time.explicit_dynamics && !plastic_plies)
               || adaptivity.process_zone_elements > 0))

@@ -825,6 +825,10 @@ $plastic
 subsection Geometry
   set Element shape = prism
 end"
+expect max_steps_linear "Nonlinear solver/Maximum steps" "$base
+subsection Nonlinear solver
+  set Maximum steps = 3
+end"
 expect plastic_dissipation "Materials/Plasticity" "$base
 $plastic
 subsection Nonlinear solver
