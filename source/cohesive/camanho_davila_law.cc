@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <amfrac/cohesive/camanho_davila_law.h>
+#include <amfrac/cohesive/coulomb_friction.h>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -50,6 +51,11 @@ namespace amfrac
       for (const auto &[name, value] : positive)
         if (!(value > 0))
           throw std::invalid_argument(std::string(name) + " must be positive");
+      if (!(friction >= 0))
+        throw std::invalid_argument("friction coefficient mu must be >= 0");
+      if (friction > 0 && !(stick_penalty > 0))
+        throw std::invalid_argument(
+          "stick penalty must be positive with friction");
       for (unsigned int i = 0; i <= 200; ++i)
         {
           const double B = i / 200.;
@@ -196,6 +202,9 @@ namespace amfrac
         }
       if (loading)
         r.tangent -= p.stiffness * outer_product(damaged_gap, trial.d);
+      if (r.history.debonded && p.friction > 0)
+        coulomb_friction(
+          gap, !history.debonded, p.friction, p.stick_penalty, r);
       return r;
     }
 

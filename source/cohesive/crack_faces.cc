@@ -30,10 +30,12 @@ namespace amfrac
 
   template <int dim>
   void
-  CohesiveInterfaces<dim>::enable_cracks(const double penalty)
+  CohesiveInterfaces<dim>::enable_cracks(const double penalty,
+                                         const double friction)
   {
     Assert(penalty > 0, ExcMessage("the crack penalty must be positive"));
-    crack_penalty = penalty;
+    crack_penalty  = penalty;
+    crack_friction = friction;
   }
 
 
@@ -163,6 +165,8 @@ namespace amfrac
     p.bk_exponent     = 1;
     p.stiffness       = crack_penalty;
     p.contact_penalty = crack_penalty;
+    p.friction        = crack_friction;
+    p.stick_penalty   = crack_penalty;
     return p;
   }
 

@@ -41,6 +41,8 @@ namespace amfrac
       p.bk_exponent     = data.bk_exponent;
       p.stiffness       = data.normal_stiffness;
       p.contact_penalty = data.contact_penalty;
+      p.friction        = data.friction;
+      p.stick_penalty   = data.stick_penalty;
       return p;
     }
 
@@ -553,7 +555,7 @@ namespace amfrac
     double tangential = 0;
     for (unsigned int i = 1; i < dim; ++i)
       tangential += s.traction[i] * s.traction[i];
-    const double  limit  = data.friction * -s.traction[0];
+    const double  limit  = friction_of(s) * -s.traction[0];
     unsigned char status = 0;
     if (s.gap[0] + s.offset[0] < 0)
       status = std::sqrt(tangential) < (1 - 1e-10) * limit ? 1 : 2;
@@ -663,7 +665,26 @@ namespace amfrac
     for (unsigned int i = 1; i < dim; ++i)
       tangential += s.traction[i] * s.traction[i];
     return 0.5 * s.traction[0] * gap[0]
-           + (tangential > 0 ? 0.5 * tangential / law.stick_penalty : 0.);
+           + (tangential > 0 ? 0.5 * tangential / stick_penalty_of(s) : 0.);
+  }
+
+
+
+  template <int dim>
+  double
+  CohesiveInterfaces<dim>::friction_of(const PointState &state) const
+  {
+    // Only crack points carry a toughness of their own.
+    return state.toughness > 0 ? crack_friction : data.friction;
+  }
+
+
+
+  template <int dim>
+  double
+  CohesiveInterfaces<dim>::stick_penalty_of(const PointState &state) const
+  {
+    return state.toughness > 0 ? crack_penalty : law.stick_penalty;
   }
 
 

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <amfrac/cohesive/coulomb_friction.h>
 #include <amfrac/cohesive/seed_law.h>
 #include <cmath>
 #include <stdexcept>
@@ -137,39 +138,7 @@ namespace amfrac
 
       // Friction phase. The stick reference starts where the bond broke,
       // so the tangential traction starts from zero (the seed's g*_Tu).
-      if (!was_debonded)
-        r.history.slip = gT;
-      const double sigma_f = p.friction * std::max(-r.traction[0], 0.);
-      const double dsigma_f_dgN
-        = r.traction[0] < 0 ? -p.friction * r.tangent[0][0] : 0.;
-      const Tensor<1, dim - 1> trial = p.stick_penalty * (gT - r.history.slip);
-      const double             norm  = trial.norm();
-      if (sigma_f == 0)
-        {
-          // Open or unloaded crack: no friction, the faces slide freely.
-          r.history.slip = gT;
-          return r;
-        }
-      if (norm <= sigma_f)
-        {
-          for (unsigned int i = 0; i < dim - 1; ++i)
-            {
-              r.traction[i + 1]       = trial[i];
-              r.tangent[i + 1][i + 1] = p.stick_penalty;
-            }
-          return r;
-        }
-      const Tensor<1, dim - 1> direction = trial / norm;
-      for (unsigned int i = 0; i < dim - 1; ++i)
-        {
-          r.traction[i + 1]   = sigma_f * direction[i];
-          r.tangent[i + 1][0] = dsigma_f_dgN * direction[i];
-          for (unsigned int j = 0; j < dim - 1; ++j)
-            r.tangent[i + 1][j + 1]
-              = sigma_f / norm * p.stick_penalty
-                * ((i == j ? 1. : 0.) - direction[i] * direction[j]);
-        }
-      r.history.slip = gT - sigma_f * direction / p.stick_penalty;
+      coulomb_friction(gap, !was_debonded, p.friction, p.stick_penalty, r);
       return r;
     }
 

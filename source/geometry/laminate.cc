@@ -9,6 +9,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold_lib.h>
 #include <map>
+#include <numeric>
 #include <random>
 #include <sstream>
 
@@ -87,6 +88,23 @@ namespace amfrac
       for (const double step : steps)
         fine.insert(fine.end(), parts, step / parts);
       return fine;
+    }
+
+    /** @p n steps over @p length, shortest at both ends and growing
+     * geometrically towards the middle so that the longest is @p ratio
+     * times the shortest (a symmetric grading; ratio 1: uniform). */
+    std::vector<double>
+    graded_steps(const unsigned int n, const double length, const double ratio)
+    {
+      const unsigned int half = (n + 1) / 2;
+      const double growth = half > 1 ? std::pow(ratio, 1. / (half - 1)) : 1.;
+      std::vector<double> steps(n);
+      for (unsigned int i = 0; i < n; ++i)
+        steps[i] = std::pow(growth, std::min(i, n - 1 - i));
+      const double sum = std::accumulate(steps.begin(), steps.end(), 0.);
+      for (double &step : steps)
+        step *= length / sum;
+      return steps;
     }
 
     /** Boundary ids 0..2*dim-1 on the faces x-, x+, y-, y+, (z-, z+) of
@@ -278,11 +296,13 @@ namespace amfrac
     const bool                       in_plane = dim == 2 && geometry.in_plane;
     const bool                       has_width_axis = dim == 3 || in_plane;
     std::vector<std::vector<double>> steps(dim);
-    steps[0].assign(geometry.elements_along_length,
-                    geometry.length / geometry.elements_along_length);
+    steps[0] = graded_steps(geometry.elements_along_length,
+                            geometry.length,
+                            geometry.edge_grading);
     if (has_width_axis)
-      steps[1].assign(geometry.elements_along_width,
-                      geometry.width / geometry.elements_along_width);
+      steps[1] = graded_steps(geometry.elements_along_width,
+                              geometry.width,
+                              geometry.edge_grading);
     if (!in_plane)
       for (unsigned int p = 0; p < laminate.n_plies(); ++p)
         steps[dim - 1].insert(steps[dim - 1].end(),
@@ -337,9 +357,16 @@ namespace amfrac
       {
         std::array<double, dim> h;
         const double scale = std::pow(0.5, geometry.global_refinements);
-        h[0] = scale * geometry.length / geometry.elements_along_length;
+        // The shortest step, so that a graded mesh does not tangle.
+        h[0] = scale
+               * graded_steps(geometry.elements_along_length,
+                              geometry.length,
+                              geometry.edge_grading)[0];
         if (has_width_axis)
-          h[1] = scale * geometry.width / geometry.elements_along_width;
+          h[1] = scale
+                 * graded_steps(geometry.elements_along_width,
+                                geometry.width,
+                                geometry.edge_grading)[0];
         if (!in_plane)
           h[dim - 1] = scale
                        * *std::min_element(geometry.ply_thickness.begin(),

@@ -65,6 +65,13 @@ namespace amfrac
                         "softening, and in contact [N/mm^3]. The faces "
                         "overlap by traction / stiffness at zero traction, "
                         "so make it large against E / element size.");
+      prm.declare_entry("Friction coefficient",
+                        "0",
+                        Patterns::Double(0),
+                        "Coulomb mu between the faces of a crack once it "
+                        "has fully softened and its faces are pressed "
+                        "together (stick spring: Penalty stiffness); 0: "
+                        "they slide freely.");
       prm.declare_entry(
         "Faces per round",
         "1",
@@ -104,6 +111,7 @@ namespace amfrac
       region                 = prm.get("Region");
       strength_scale         = prm.get("Strength scale");
       penalty                = prm.get_double("Penalty stiffness");
+      friction               = prm.get_double("Friction coefficient");
       faces_per_round        = prm.get_integer("Faces per round");
       rounds_per_step        = prm.get_integer("Rounds per step");
       onset_tolerance        = prm.get_double("Onset tolerance");

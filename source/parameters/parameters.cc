@@ -65,6 +65,18 @@ namespace amfrac
                         "8",
                         Patterns::Integer(1),
                         "Number of elements along y (3D and 2D in-plane).");
+      prm.declare_entry(
+        "Edge grading",
+        "1",
+        Patterns::Double(1, 1000),
+        "Ratio of the largest to the smallest element length along x (and "
+        "y in 3D and 2D in-plane) of the box mesh: 1 is uniform; above 1 "
+        "the elements shrink geometrically from the middle towards both "
+        "ends, where a simply supported or clamped edge has its boundary "
+        "layer and, in 3D, the singular stress of a support next to a "
+        "loaded face. The number of elements stays Elements along "
+        "length/width. Box meshes of hexahedra only (no Hole radius, Mesh "
+        "file or prisms).");
       prm.declare_entry("Elements per ply",
                         "1",
                         Patterns::Integer(1),
@@ -218,6 +230,7 @@ namespace amfrac
       elements_along_length  = prm.get_integer("Elements along length");
       elements_along_width   = prm.get_integer("Elements along width");
       elements_per_ply       = prm.get_integer("Elements per ply");
+      edge_grading           = prm.get_double("Edge grading");
       global_refinements     = prm.get_integer("Global refinements");
       mesh_distortion        = prm.get_double("Mesh distortion");
       prisms                 = prm.get("Element shape") == "prism";
@@ -247,6 +260,11 @@ namespace amfrac
       require(hole_radius == 0 || mesh_distortion == 0,
               "Geometry/Mesh distortion",
               "is for the box mesh: set it to 0 with a Hole radius");
+      require(edge_grading == 1
+                || (!prisms && hole_radius == 0 && mesh_file.empty()),
+              "Geometry/Edge grading",
+              "grades the structured box of hexahedra: set it to 1 with "
+              "prisms, a Hole radius or a Mesh file");
       require(imperfection_mode == 0
                 || (imperfection_amplitude != 0
                     && std::abs(imperfection_amplitude) <= largest),
@@ -1125,7 +1143,8 @@ namespace amfrac
                         "with the quadratic onset criterion and "
                         "Benzeggagh-Kenane propagation (BK exponent), one "
                         "penalty (Normal stiffness) in all modes, contact "
-                        "in compression and no friction.");
+                        "in compression and, once fully debonded, the same "
+                        "Coulomb friction (Friction coefficient).");
       prm.declare_entry("BK exponent",
                         "2",
                         Patterns::Double(),
@@ -1167,7 +1186,8 @@ namespace amfrac
                         Patterns::Double(),
                         "alpha_T in N/mm^3 of the stick phase of friction "
                         "after debonding; 0 means equal to Shear "
-                        "stiffness.");
+                        "stiffness (Normal stiffness with Law = "
+                        "camanho-davila).");
       prm.declare_entry("Friction coefficient",
                         "0",
                         Patterns::Double(),
@@ -1255,13 +1275,6 @@ namespace amfrac
               section + "Shear stiffness",
               "Law = camanho-davila has one penalty (Normal stiffness) in "
               "all modes: leave Shear stiffness at 0");
-      require(friction == 0,
-              section + "Friction coefficient",
-              "Law = camanho-davila has no friction phase: use Law = seed "
-              "for friction after debonding");
-      require(stick_penalty == 0,
-              section + "Stick penalty",
-              "Law = camanho-davila has no friction phase: leave it at 0");
       cohesive::CamanhoDavilaProperties p;
       p.normal_strength = normal_strength;
       p.shear_strength  = shear_strength;

@@ -903,8 +903,7 @@ namespace amfrac
         interface_work += ledger[k].work;
         interface_storage += ledger[k].stored;
         columns.emplace_back("dissipated" + name, ledger[k].dissipated);
-        if (!crack)
-          columns.emplace_back("friction" + name, ledger[k].friction);
+        columns.emplace_back("friction" + name, ledger[k].friction);
         columns.emplace_back("viscous" + name, ledger[k].viscous);
         columns.emplace_back("debonded" + name, ledger[k].debonded);
         columns.emplace_back("damaged" + name, ledger[k].damaged);

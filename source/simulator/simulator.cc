@@ -89,7 +89,8 @@ namespace amfrac
       interfaces = std::make_unique<CohesiveInterfaces<dim>>(prm.cohesive);
     if (parameters.cracks.active)
       {
-        interfaces->enable_cracks(parameters.cracks.penalty);
+        interfaces->enable_cracks(parameters.cracks.penalty,
+                                  parameters.cracks.friction);
         const std::string &constants = prm.boundary_conditions.constants;
         crack_region = make_expression_function<dim>({parameters.cracks.region},
                                                      1,

@@ -178,8 +178,6 @@ expect zero_strength "Cohesive interfaces/Normal strength" "$(cohesive 'set Norm
 expect negative_energy "Cohesive interfaces/Mode II fracture energy" "$(cohesive 'set Mode II fracture energy = -0.5')"
 expect gmax_below_g0 "Cohesive interfaces/Mode I fracture energy" "$(cohesive 'set Normal stiffness = 10')"
 expect negative_mu "Cohesive interfaces/Friction coefficient" "$(cohesive 'set Friction coefficient = -0.1')"
-expect cd_friction "Cohesive interfaces/Friction coefficient>: Law = camanho-davila has no friction" "$(cohesive 'set Law = camanho-davila
-  set Friction coefficient = 0.3')"
 expect cd_shear_stiffness "Cohesive interfaces/Shear stiffness>: Law = camanho-davila has one penalty" "$(cohesive 'set Law = camanho-davila
   set Shear stiffness = 5e4')"
 expect cd_bk_exponent "Cohesive interfaces/BK exponent>: must be positive" "$(cohesive 'set Law = camanho-davila
@@ -824,6 +822,15 @@ expect plastic_prisms "Materials/Plasticity" "$base
 $plastic
 subsection Geometry
   set Element shape = prism
+end"
+expect edge_grading_prisms "Geometry/Edge grading" "$base
+subsection Geometry
+  set Element shape = prism
+  set Edge grading = 4
+end"
+expect edge_grading_below_one "Edge grading" "$base
+subsection Geometry
+  set Edge grading = 0.5
 end"
 expect max_steps_linear "Nonlinear solver/Maximum steps" "$base
 subsection Nonlinear solver

@@ -4,7 +4,8 @@
 // zero after Gc times its area is dissipated (2 %), the two halves are two
 // fragments, and the ledger balances. Argument: 2 (the scene) or 3 (the
 // same bar in 3D, 2 x 2 elements across); or beam (prm/cracked_beam_2d.prm,
-// transverse cracks that reach a cohesive interface).
+// transverse cracks that reach a cohesive interface); or friction (the
+// bar's crack closed and sheared, with and without Coulomb friction).
 #include "scene.h"
 
 #include <algorithm>
@@ -73,6 +74,73 @@ namespace
                 history.value(last, "dissipated_cracks"),
                 1e-6);
   }
+  /** The 2D bar of prm/cracked_bar_2d.prm broken in tension (t <= 1),
+   * pushed back into compression (t <= 2) and its right half then moved
+   * across the crack (t <= 3), both ends held in x and y: with Crack
+   * insertion/Friction coefficient = mu the crack's faces slide with a
+   * shear force mu times the normal force and dissipate mu |N| per mm of
+   * slip; without friction they slide freely. */
+  void
+  check_friction(const std::string &file)
+  {
+    // Both ends held in x and y; the bottom face free, so that the right
+    // half can move across the crack.
+    const std::string path
+      = "subsection Boundary conditions\n"
+        " subsection x-\n"
+        "  set Components = x, y\n"
+        "  set Displacement = 0; 0\n"
+        " end\n"
+        " subsection x+\n"
+        "  set Components = x, y\n"
+        "  set Displacement = if(t < 1, 0.07*t, if(t < 2, 0.07 - 0.08*(t - "
+        "1), -0.01)); if(t < 2, 0, 0.2*(t - 2))\n"
+        " end\n"
+        " subsection y-\n"
+        "  set Type = free\n"
+        " end\n"
+        "end\n"
+        "subsection Time\n"
+        " set End time = 3\n"
+        " set Number of steps = 105\n"
+        "end\n"
+        "subsection Output\n"
+        " set Field format = none\n"
+        "end\n";
+    for (const double mu : {0.3, 0.})
+      {
+        const auto simulator = amfrac_test::run_scene<2>(
+          file,
+          path + "subsection Crack insertion\n set Friction coefficient = "
+            + std::to_string(mu) + "\nend\n");
+        const History    &history = simulator->history();
+        const std::size_t last    = history.n_rows() - 1;
+        CHECK_CLOSE(history.value(last, "time"), 3, 1e-12);
+        CHECK(history.value(last, "crack_faces") == 2);
+        const double normal = history.value(last, "reaction_x+_x");
+        const double shear  = history.value(last, "reaction_x+_y");
+        std::cout << "mu = " << mu << ": normal force " << normal
+                  << " N/mm, shear force " << shear << " N/mm, friction "
+                  << history.value(last, "friction_cracks") << " N"
+                  << std::endl;
+        // Compressed by about E2 * 0.01 / 4 = 25 MPa over the 1 mm section.
+        CHECK(normal < -20);
+        CHECK_CLOSE(std::abs(shear), mu * std::abs(normal), 1e-6 * 25);
+        // In the last step the halves keep their shape (the force is at
+        // the Coulomb limit), so the faces slip by what the end moved and
+        // friction dissipates mu |N| times that.
+        const double moved
+          = 0.2
+            * (history.value(last, "time") - history.value(last - 1, "time"));
+        const double dissipated = history.value(last, "friction_cracks")
+                                  - history.value(last - 1, "friction_cracks");
+        CHECK_CLOSE(dissipated, mu * std::abs(normal) * moved, 1e-6);
+        for (std::size_t r = 0; r < history.n_rows(); ++r)
+          CHECK(std::abs(history.value(r, "balance_error"))
+                < 1e-6 * std::max(1., history.value(r, "external_work")));
+      }
+  }
+
   /** prm/cracked_beam_2d.prm: the run finishes; cracks only in the
    * bottom 90-degree plies (y < 0.25), through-thickness (vertical faces);
    * interface 1 above them damaged where they meet it; the ledger
@@ -307,6 +375,8 @@ main(int argc, char *argv[])
     check_bar<2>(argv[2], "");
   else if (case_name == "beam")
     check_beam(argv[2]);
+  else if (case_name == "friction")
+    check_friction(argv[2]);
   else if (case_name == "refined_2")
     check_refined_bar<2>(argv[2], argv[3], "");
   else if (case_name == "refined_3")

@@ -2,8 +2,8 @@
 // single point: the work to full debonding under any fixed mode mix equals
 // the BK fracture energy, the quadratic onset criterion, damaged-secant
 // unloading, irreversibility when the mode mix changes, contact in
-// compression, and the tangent against central differences in every
-// branch.
+// compression, Coulomb friction once fully debonded, and the tangent
+// against central differences in every branch.
 #include "law_checks.h"
 
 #include <amfrac/cohesive/camanho_davila_law.h>
@@ -74,6 +74,72 @@ namespace
                 const char              *branch)
   {
     amfrac_test::check_tangent<dim>(law<dim>, gap, history, branch, 1e-6);
+  }
+  /** Coulomb friction once fully debonded (Friction coefficient > 0):
+   * shear debonds the point, then under compression the faces stick on the
+   * stick spring up to mu |sigma_N| and slide at it; reversal sticks first;
+   * opening frees them; mu = 0 is the frictionless law exactly; tangents
+   * in the stick and slip branches. */
+  void
+  check_friction(const CamanhoDavilaProperties &frictionless)
+  {
+    CamanhoDavilaProperties p = frictionless;
+    p.friction                = 0.3;
+    p.stick_penalty           = 5e5;
+    p.validate();
+    const auto with_friction
+      = [&](const Tensor<1, 3> &gap, const PointHistory<3> &history) {
+          return camanho_davila_law<3>(gap, history, p);
+        };
+
+    // Debond in mode II: the bond breaks at the final shear gap, where the
+    // stick reference starts, so the tangential traction starts at zero.
+    const double    g_f = 1.2 * p.final(1);
+    PointHistory<3> h;
+    for (unsigned int s = 1; s <= 40; ++s)
+      h = with_friction(Tensor<1, 3>({0, g_f * s / 40., 0}), h).history;
+    CHECK(h.debonded);
+    CHECK_CLOSE(h.slip[0], g_f, 1e-15);
+
+    // Pressed together, then pushed further along x: stick, then slide.
+    const double gN      = -1e-5;
+    const double sigma_f = p.friction * p.contact_penalty * -gN;
+    const double stick_g = 0.5 * sigma_f / p.stick_penalty;
+    const auto   stick = with_friction(Tensor<1, 3>({gN, g_f + stick_g, 0}), h);
+    CHECK_CLOSE(stick.traction[0], p.contact_penalty * gN, 1e-9);
+    CHECK_CLOSE(stick.traction[1], 0.5 * sigma_f, 1e-9 * sigma_f);
+    const auto slide = with_friction(Tensor<1, 3>({gN, g_f + 0.01, 0}), h);
+    CHECK_CLOSE(slide.traction[1], sigma_f, 1e-9 * sigma_f);
+    CHECK_CLOSE(slide.history.slip[0],
+                g_f + 0.01 - sigma_f / p.stick_penalty,
+                1e-12);
+    // Back by less than the stick range: elastic, the slip kept.
+    const auto back
+      = with_friction(Tensor<1, 3>(
+                        {gN, g_f + 0.01 - 0.5 * sigma_f / p.stick_penalty, 0}),
+                      slide.history);
+    CHECK_CLOSE(back.traction[1], 0.5 * sigma_f, 1e-9 * sigma_f);
+    CHECK(back.history.slip == slide.history.slip);
+    // Opened: no traction, the faces slide freely.
+    const auto open
+      = with_friction(Tensor<1, 3>({1e-3, g_f, 0}), slide.history);
+    CHECK(open.traction.norm() == 0);
+    // Without friction the law is the frictionless one, history included.
+    const auto none = camanho_davila_law<3>(Tensor<1, 3>({gN, g_f + 0.01, 0}),
+                                            slide.history,
+                                            frictionless);
+    CHECK(none.traction[1] == 0 && none.history.slip == slide.history.slip);
+
+    amfrac_test::check_tangent<3>(with_friction,
+                                  Tensor<1, 3>({gN, g_f + stick_g, 1e-5}),
+                                  h,
+                                  "friction, stick",
+                                  1e-6);
+    amfrac_test::check_tangent<3>(with_friction,
+                                  Tensor<1, 3>({gN, g_f + 0.01, 3e-3}),
+                                  h,
+                                  "friction, slip",
+                                  1e-6);
   }
 } // namespace
 
@@ -178,14 +244,20 @@ main()
                    "compression with shear softening");
   check_tangent<3>(Tensor<1, 3>({-1e-5, 2e-3, 0}), broken, "debonded");
 
+  check_friction(p);
+
   // Ill-posed data are rejected with the reason.
-  for (int which = 0; which < 2; ++which)
+  for (int which = 0; which < 4; ++which)
     {
       CamanhoDavilaProperties bad = p;
       if (which == 0)
         bad.G_Ic = 0.4 * p.normal_strength * p.onset(0);
-      else
+      else if (which == 1)
         bad.bk_exponent = 0;
+      else if (which == 2)
+        bad.friction = -0.1;
+      else
+        bad.friction = 0.3; // without a stick penalty
       bool thrown = false;
       try
         {

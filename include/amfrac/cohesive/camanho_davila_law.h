@@ -21,6 +21,10 @@ namespace amfrac
       double bk_exponent;     ///< eta of Benzeggagh-Kenane
       double stiffness;       ///< K
       double contact_penalty; ///< in compression
+      /** Coulomb mu between fully debonded faces in contact (0: none). */
+      double friction = 0;
+      /** alpha_T of the stick phase of that friction. */
+      double stick_penalty = 0;
 
       /** Onset and final mixed-mode displacement of the mode mix
        * B = G_shear / G_total (0: mode I, 1: mode II). */
@@ -52,8 +56,9 @@ namespace amfrac
      * Camanho-Davila keep the largest delta_m; we keep the largest d instead,
      * which is the same under a fixed mode mix and never heals a point whose
      * mode mix changes. Traction (1 - d) K g, except the normal part in
-     * compression, which is the contact penalty at any damage. There is no
-     * friction after debonding (use the seed's law for that).
+     * compression, which is the contact penalty at any damage. Once fully
+     * debonded (d = 1), faces in contact slide with Coulomb friction
+     * (coulomb_friction(), as in the seed's law) if friction > 0.
      */
     template <int dim>
     LawResponse<dim>

@@ -48,9 +48,11 @@ namespace amfrac
     explicit CohesiveInterfaces(const parameters::CohesiveInterfaces &data);
 
     /** Crack insertion: inserted faces get an extrinsic bilinear law of
-     * penalty stiffness @p penalty (one more entry of ledger()). */
+     * penalty stiffness @p penalty (one more entry of ledger()) and, once
+     * fully softened, Coulomb @p friction in contact (stick spring:
+     * @p penalty). */
     void
-    enable_cracks(const double penalty);
+    enable_cracks(const double penalty, const double friction = 0);
 
     bool
     cracks_enabled() const
@@ -460,7 +462,8 @@ namespace amfrac
     /** Inserted crack faces, each from both sides; penalty of their law
      * (0: no crack insertion). */
     std::set<std::pair<CellId, unsigned int>> cracked;
-    double                                    crack_penalty = 0;
+    double                                    crack_penalty  = 0;
+    double                                    crack_friction = 0;
     const cohesive::SeedLawProperties         law;
     const cohesive::CamanhoDavilaProperties   camanho_davila;
     std::vector<Element>                      elements;
@@ -479,6 +482,13 @@ namespace amfrac
 
     void
     count_contact_change(Element &element, const unsigned int q);
+
+    /** Coulomb mu and stick penalty of a point's law (a crack's or the
+     * ply interfaces'). */
+    double
+    friction_of(const PointState &state) const;
+    double
+    stick_penalty_of(const PointState &state) const;
 
     /** The stiffest penalty of the ply interfaces' law (normal, shear,
      * contact, stick). */

@@ -28,8 +28,10 @@ namespace amfrac
       /** Plies whose faces may crack (sorted; empty: all). */
       std::vector<unsigned int> plies;
       double                    penalty;
-      unsigned int              faces_per_round;
-      unsigned int              rounds_per_step;
+      /** Coulomb mu between the faces of a fully softened crack. */
+      double       friction = 0;
+      unsigned int faces_per_round;
+      unsigned int rounds_per_step;
       /** A step whose most critical face exceeds Hoffman index 1 + this
        * before any insertion is cut back. */
       double onset_tolerance;

@@ -38,8 +38,11 @@ namespace amfrac
       unsigned int        elements_along_length;
       unsigned int        elements_along_width;
       unsigned int        elements_per_ply;
-      unsigned int        global_refinements;
-      double              mesh_distortion;
+      /** Ratio of the largest to the smallest in-plane element length of
+       * the box, smallest at both ends (1: uniform). */
+      double       edge_grading = 1;
+      unsigned int global_refinements;
+      double       mesh_distortion;
       /** Geometry/Element shape = prism (3D): each in-plane cell of the
        * structured mesh is split into two triangles and extruded, so the
        * plies are layers of wedges. */
