@@ -75,8 +75,8 @@ namespace amfrac
         "ends, where a simply supported or clamped edge has its boundary "
         "layer and, in 3D, the singular stress of a support next to a "
         "loaded face. The number of elements stays Elements along "
-        "length/width. Box meshes of hexahedra only (no Hole radius, Mesh "
-        "file or prisms).");
+        "length/width (an axis of one or two elements stays uniform). Box "
+        "meshes of hexahedra only (no Hole radius, Mesh file or prisms).");
       prm.declare_entry("Elements per ply",
                         "1",
                         Patterns::Integer(1),

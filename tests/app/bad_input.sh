@@ -828,6 +828,11 @@ subsection Geometry
   set Element shape = prism
   set Edge grading = 4
 end"
+expect edge_grading_hole "Geometry/Edge grading" "$base
+subsection Geometry
+  set Hole radius = 2
+  set Edge grading = 4
+end"
 expect edge_grading_below_one "Edge grading" "$base
 subsection Geometry
   set Edge grading = 0.5

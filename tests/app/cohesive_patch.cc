@@ -11,6 +11,8 @@
 //    in compression the contact penalty carries the load like the intact
 //    bond of the same stiffness (equal reactions to the Newton tolerance,
 //    1e-7) and every point is in contact.
+// 3. The same pre-crack with the Camanho-Davila law and Coulomb friction,
+//    pressed and then slid: shear force = mu x normal force.
 #include "../check.h"
 
 #include <amfrac/parameters/parameters.h>
@@ -99,6 +101,40 @@ namespace
            "  set Mode II fracture energy = 1e6\n  set Quadrature = "
            + quadrature + "\n" + extra + "end\n";
   }
+  /** 3. The pre-cracked stack with Law = camanho-davila and Friction
+   * coefficient 0.3, pressed together and its top block then moved along
+   * x (the x- roller holds the two lower blocks only): the debonded faces
+   * slide with a shear force of 0.3 times the normal force; the friction
+   * is in the interface's ledger and the balance holds. */
+  void
+  check_friction(const double opening, const std::string &cracked)
+  {
+    const std::string friction
+      = "  set Law = camanho-davila\n  set Friction coefficient = 0.3\n";
+    const std::string slide
+      = "subsection Boundary conditions\n  subsection x-\n"
+        "    set Where = z < 0.9\n  end\n  subsection z+\n"
+        "    set Components = x, z\n"
+        "    set Displacement = 10*max(t - 0.5, 0)*1e-3; 0; -2e-3*min(t, "
+        "0.5)\n  end\nend\nsubsection Time\n  set Number of steps = 4\nend\n";
+    Simulator<3> simulator(
+      parameters::Parameters::from_string(
+        stack(3, -opening, bond("lobatto", cracked + friction)) + slide),
+      MPI_COMM_WORLD);
+    simulator.run();
+    const History &h      = simulator.history();
+    const auto     last   = h.n_rows() - 1;
+    const double   normal = h.value(last, "reaction_z+_z");
+    const double   shear  = h.value(last, "reaction_z+_x");
+    std::cout << "pre-crack with friction: normal force " << normal
+              << ", shear force " << shear << ", friction "
+              << h.value(last, "friction_i1") << std::endl;
+    CHECK(normal < 0);
+    CHECK_CLOSE(std::abs(shear) / std::abs(normal), 0.3, 1e-6);
+    CHECK(h.value(last, "friction_i1") > 0.1 * 0.3 * std::abs(normal) * 5e-3);
+    CHECK(std::abs(h.value(last, "balance_error"))
+          < 1e-6 * h.value(last, "external_work"));
+  }
 } // namespace
 
 int
@@ -142,5 +178,7 @@ main(int argc, char *argv[])
   CHECK(pushed.force < 0);
   CHECK(pushed.status_count[Record::contact] == 36);
   CHECK_CLOSE(pushed.force / intact.force, 1, 1e-7);
+
+  check_friction(opening, cracked);
   return amfrac_test::summary();
 }

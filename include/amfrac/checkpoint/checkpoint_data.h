@@ -16,8 +16,9 @@ namespace amfrac
   class CheckpointData
   {
   public:
-    /** Version of the layout; read() refuses any other. */
-    static constexpr std::int64_t format_version = 3;
+    /** Version of the layout; read() refuses any other. 4: the history of
+     * a run with crack insertion has the column friction_cracks. */
+    static constexpr std::int64_t format_version = 4;
 
     void
     put(const std::string &name, const std::vector<double> &values)
