@@ -580,6 +580,8 @@ expect mesh_file_mixed "mixed prism/hexahedron meshes" "$base
 $(mesh mixed.geo '  set Element shape = prism')"
 expect mesh_file_2d "Geometry/Mesh file" "$(with 'set Dimension = 3' 'set Dimension = 2')
 $(mesh square.geo)"
+expect mesh_file_edge_grading "Geometry/Edge grading" "$base
+$(mesh square_quads.geo '  set Edge grading = 4')"
 expect mesh_file_hole "a hole belongs in the mesh file" "$base
 $(mesh square.geo '  set Hole radius = 0.1')"
 expect prism_adaptivity_msh "cannot be remeshed: give the .geo" "$base
