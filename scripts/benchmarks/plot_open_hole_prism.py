@@ -15,7 +15,7 @@ for degree, marker in (("1", "o"), ("2", "s")):
     runs = sorted((r for r in rows if r["degree"] == degree), key=lambda r: int(r["dofs"]))
     for ax, x in zip(axes, ("dofs", "wall_s")):
         ax.loglog([float(r[x]) for r in runs], [float(r["work_error"]) for r in runs],
-                  marker=marker, label="P%s prisms" % degree)
+                  marker=marker, label="P%s prisms%s" % (degree, " (curved hole)" if degree == "2" else ""))
 axes[0].set_xlabel("unknowns")
 axes[1].set_xlabel("wall time [s] (one rank, Gmsh meshing included)")
 for ax in axes:

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <amfrac/base/nearest_points.h>
+#include <amfrac/base/reference_cells.h>
 #include <amfrac/cohesive/interface_assembler.h>
 #include <amfrac/parameters/expressions.h>
 #include <amfrac/parameters/input_error.h>
@@ -92,6 +93,41 @@ namespace amfrac
       return {lower, upper};
     }
   } // namespace
+
+
+
+  template <int dim>
+  hp::QCollection<dim - 1>
+  CohesiveInterfaces<dim>::face_rules(const TiedCopyDoFs<dim> &dofs,
+                                      const unsigned int       n_nodes) const
+  {
+    if (!data.lobatto)
+      return dofs.face_quadrature(n_nodes);
+    if (dofs.reference_cell().is_hyper_cube())
+      return hp::QCollection<dim - 1>(QGaussLobatto<dim - 1>(n_nodes));
+    // Nodal integration on a wedge: the vertex rule on its triangles (P1
+    // only: a quadratic triangle has no nodal rule with positive weights,
+    // parameters refuse it), Gauss-Lobatto on its quadrilaterals.
+    AssertThrow(n_nodes == 2, ExcNotImplemented());
+    hp::QCollection<dim - 1> rules;
+    for (unsigned int f = 0; f < dofs.reference_cell().n_faces(); ++f)
+      {
+        const auto face = dofs.reference_cell().face_reference_cell(f);
+        if (face.is_hyper_cube())
+          rules.push_back(QGaussLobatto<dim - 1>(2));
+        else
+          {
+            std::vector<Point<dim - 1>> vertices;
+            for (const unsigned int v : face.vertex_indices())
+              vertices.push_back(face.template vertex<dim - 1>(v));
+            rules.push_back(Quadrature<dim - 1>(
+              vertices,
+              std::vector<double>(vertices.size(),
+                                  face.volume() / vertices.size())));
+          }
+      }
+    return rules;
+  }
 
 
 
@@ -200,13 +236,12 @@ namespace amfrac
                                       largest_distance);
     Assert(largest_distance < 1e-8 * cell->diameter(), ExcInternalError());
     (void)largest_distance;
-    static const MappingQ1<dim> mapping;
     for (unsigned int q = 0; q < n_q; ++q)
       {
         element.JxW.push_back(lower.JxW(q));
         element.points.push_back(lower.quadrature_point(q));
-        element.unit_points.push_back(
-          mapping.transform_real_to_unit_cell(cell, lower.quadrature_point(q)));
+        element.unit_points.push_back(real_to_unit<dim>(
+          dofs.get_linear_mapping(), cell, lower.quadrature_point(q)));
         element.frame.push_back(local_frame<dim>(lower.normal_vector(q)));
       }
     for (unsigned int k = 0; k < lower_local.size(); ++k)
@@ -296,14 +331,14 @@ namespace amfrac
     elements.clear();
     const unsigned int n_nodes = dofs.get_fe().degree + 1;
     set_point_regions(n_nodes);
-    const Quadrature<dim - 1> quadrature
-      = data.lobatto ? Quadrature<dim - 1>(QGaussLobatto<dim - 1>(n_nodes)) :
-                       Quadrature<dim - 1>(QGauss<dim - 1>(n_nodes));
-    const MappingQ1<dim> mapping;
-    const auto           flags = update_values | update_quadrature_points
+    // The bulk's map: an interface face with an edge on a curved hole is
+    // integrated over the same curved face as the solid around it.
+    const auto &mapping = dofs.get_mapping();
+    const auto  flags   = update_values | update_quadrature_points
                        | update_JxW_values | update_normal_vectors;
-    FEFaceValues<dim> lower(mapping, dofs.get_fe(), quadrature, flags);
-    FEFaceValues<dim> upper(mapping, dofs.get_fe(), quadrature, flags);
+    const auto        rules = face_rules(dofs, n_nodes);
+    FEFaceValues<dim> lower(mapping, dofs.get_fe(), rules, flags);
+    FEFaceValues<dim> upper(mapping, dofs.get_fe(), rules, flags);
     for (const auto &cell : dofs.copy_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         for (const unsigned int f : cell->face_indices())
@@ -848,7 +883,8 @@ namespace amfrac
     const Quadrature<dim - 1> quadrature
       = data.lobatto ? Quadrature<dim - 1>(QGaussLobatto<dim - 1>(n_nodes)) :
                        Quadrature<dim - 1>(QGauss<dim - 1>(n_nodes));
-    // The mapping of the interface elements (make_elements()).
+    // The straight-sided map: the interface elements' own
+    // (make_elements()) wherever the mesh has no curved manifold.
     const MappingQ1<dim>   mapping;
     FEFaceValues<dim>      face_values(mapping,
                                   fe,

@@ -184,7 +184,16 @@ namespace amfrac
           return id != numbers::flat_manifold_id;
         });
         if (!shape.is_hyper_cube())
-          mapping = get_linear_mapping().clone();
+          {
+            // P2 wedges on a hole (HoleEdgeManifold) get the isoparametric
+            // map: MappingFE places its support points with the manifold.
+            if constexpr (dim == 3)
+              if (curved && fe->degree > 1)
+                mapping = std::make_unique<MappingFE<dim>>(
+                  FE_WedgeP<dim>(fe->degree));
+            if (!mapping)
+              mapping = get_linear_mapping().clone();
+          }
         else
           mapping = curved && fe->degree > 1 ?
                       std::unique_ptr<Mapping<dim>>(

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <amfrac/geometry/hole_edge_manifold.h>
 #include <amfrac/geometry/in_plane_refinement.h>
 #include <amfrac/geometry/laminate.h>
 #include <amfrac/geometry/plane_mesh.h>
@@ -221,6 +222,27 @@ namespace amfrac
     }
 
 
+    /** An extruded open-hole plate gets HoleEdgeManifold (manifold id 2)
+     * on every cell, face and edge, so that P2 wedges map the hole as a
+     * circle, not as the polygon of Gmsh's nodes on it. On the whole mesh,
+     * not only around the hole: deal.II 9.4's MappingFE asserts (in debug
+     * builds) that all manifold ids of a cell are equal, and a neighbour
+     * of a hole cell would share faces with id 2. Away from the hole the
+     * manifold is flat. */
+    void
+    attach_hole_edge_manifold(const parameters::Geometry &geometry,
+                              Triangulation<3>           &triangulation)
+    {
+      triangulation.set_all_manifold_ids(2);
+      triangulation.set_manifold(2,
+                                 HoleEdgeManifold(Point<3>(0.5
+                                                             * geometry.length,
+                                                           0.5 * geometry.width,
+                                                           0),
+                                                  geometry.hole_radius));
+    }
+
+
     /** The laminate of a Gmsh in-plane mesh (Geometry/Mesh file, or an
      * open hole on prisms), extruded through the element layers. */
     template <int dim>
@@ -276,6 +298,8 @@ namespace amfrac
           extrude_plane_mesh(plane,
                              layer_coordinates(geometry, laminate),
                              triangulation);
+          if (geometry.mesh_file.empty() && geometry.hole_radius > 0)
+            attach_hole_edge_manifold(geometry, triangulation);
         }
     }
   } // namespace

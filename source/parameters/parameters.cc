@@ -104,12 +104,14 @@ namespace amfrac
         "vertices; Global refinements multiply the numbers of elements "
         "instead of refining (deal.II cannot refine wedges). Prisms take "
         "linear static scenes (adaptive ones by global remeshing with "
-        "Gmsh, see Adaptivity/Refinement cycles) and explicit "
-        "runs with Finite element degree = 1, with VTU output, without "
-        "cohesive interfaces, crack insertion, contact, an impactor, a "
-        "patch load, buckling, total Lagrangian kinematics or a "
-        "Refinement region so far. With a Hole radius the in-plane mesh "
-        "is Gmsh's (unstructured triangles, see Elements around hole); a "
+        "Gmsh, see Adaptivity/Refinement cycles), cohesive ply "
+        "interfaces on the Newton path (triangular interface faces; not "
+        "with remeshing or explicit runs yet) and explicit runs with "
+        "Finite element degree = 1, with VTU output, without crack "
+        "insertion, contact, an impactor, a patch load, buckling, total "
+        "Lagrangian kinematics or a Refinement region so far. With a Hole "
+        "radius the in-plane mesh is Gmsh's (unstructured triangles, see "
+        "Elements around hole) and P2 wedges map the hole as a circle; a "
         "Mesh file brings its own.");
       prm.declare_entry("2D model",
                         "cross-section",
@@ -1703,7 +1705,17 @@ namespace amfrac
                     == ".msh",
              "adaptivity on a Geometry/Mesh file that is a .msh (a mesh "
              "without its geometry cannot be remeshed: give the .geo)");
-      refuse(!cohesive.interfaces.empty(), "Cohesive interfaces/Interfaces");
+      // Ply interfaces are the triangles between the layers of wedges.
+      const bool interfaces = !cohesive.interfaces.empty();
+      refuse(interfaces && time.explicit_dynamics,
+             "Cohesive interfaces/Interfaces in an explicit run (not tested "
+             "on prisms yet)");
+      if (interfaces && cohesive.lobatto && discretization.degree > 1)
+        throw InputError("Cohesive interfaces/Quadrature",
+                         "lobatto (nodal) integration needs Finite element "
+                         "degree = 1 on prisms: a quadratic triangle has no "
+                         "nodal rule with positive weights; set Quadrature = "
+                         "gauss");
       refuse(cracks.active, "Crack insertion/Criterion");
       refuse(contact.active, "Contact/Enable");
       refuse(impactor.active, "an impactor (Impactor/Radius > 0)");

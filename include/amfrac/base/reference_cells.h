@@ -54,8 +54,9 @@ namespace amfrac
   }
 
   /** The reference coordinates of @p p in @p cell under @p mapping. On a
-   * wedge (whose mapping in amfrac is always the linear one) by Newton's
-   * method on the linear wedge map: deal.II 9.4's
+   * wedge by Newton's method on the *linear* wedge map, whatever @p mapping
+   * is (P2 wedges on a curved hole differ from it by O(h^2 / R) near the
+   * hole; the callers locate points, they do not integrate): deal.II 9.4's
    * MappingFE::transform_real_to_unit_cell() needs second derivatives that
    * its wedge polynomials do not implement. Throws
    * Mapping::ExcTransformationFailed when Newton does not converge (a

@@ -511,6 +511,12 @@ namespace amfrac
     void
     set_point_regions(const unsigned int n_points);
 
+    /** The rules of the interface points on the faces of the cell shape
+     * (one per face on a wedge): Gauss with @p n_nodes points per
+     * direction, or the nodal (Lobatto) rule. */
+    hp::QCollection<dim - 1>
+    face_rules(const TiedCopyDoFs<dim> &dofs, const unsigned int n_nodes) const;
+
     /** Damage of a point for output and for the front (1 if debonded). */
     double
     damage(const PointState &state) const;

@@ -68,10 +68,11 @@ namespace amfrac
     }
 
     /** The mapping every integral and output on the copy space uses:
-     * MappingQ of the element's degree where the mesh has curved
-     * manifolds (an open hole: a Q2 solution on a polygonal hole would
-     * converge to the polygon's answer), MappingQ1 otherwise. Chosen at
-     * the first distribute(). */
+     * where the mesh has curved manifolds (an open hole: a Q2 solution on
+     * a polygonal hole would converge to the polygon's answer) MappingQ of
+     * the element's degree on hexahedra and MappingFE of FE_WedgeP of the
+     * degree on wedges (HoleEdgeManifold), the linear map otherwise.
+     * Chosen at the first distribute(). */
     const Mapping<dim> &
     get_mapping() const
     {

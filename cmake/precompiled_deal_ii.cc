@@ -1,0 +1,1 @@
+// The one (empty) source of the target that builds the precompiled header.
