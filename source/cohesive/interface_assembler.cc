@@ -877,18 +877,13 @@ namespace amfrac
     const std::function<bool(const CellIterator &, unsigned int)> &in_contact)
     const
   {
-    const auto               &fe      = dofs.get_fe();
-    const unsigned int        n       = fe.n_dofs_per_cell();
-    const unsigned int        n_nodes = fe.degree + 1;
-    const Quadrature<dim - 1> quadrature
-      = data.lobatto ? Quadrature<dim - 1>(QGaussLobatto<dim - 1>(n_nodes)) :
-                       Quadrature<dim - 1>(QGauss<dim - 1>(n_nodes));
-    // The straight-sided map: the interface elements' own
-    // (make_elements()) wherever the mesh has no curved manifold.
-    const MappingQ1<dim>   mapping;
-    FEFaceValues<dim>      face_values(mapping,
+    const auto        &fe      = dofs.get_fe();
+    const unsigned int n       = fe.n_dofs_per_cell();
+    const unsigned int n_nodes = fe.degree + 1;
+    // The interface elements' own rules and map (make_elements()).
+    FEFaceValues<dim>      face_values(dofs.get_mapping(),
                                   fe,
-                                  quadrature,
+                                  face_rules(dofs, n_nodes),
                                   update_values | update_JxW_values);
     dealii::Vector<double> mass(n), rows(n);
     double                 largest = 0;
@@ -935,9 +930,8 @@ namespace amfrac
           if (rows(a) / mass(a) > largest)
             {
               largest = rows(a) / mass(a);
-              where
-                = mapping.transform_unit_to_real_cell(cell,
-                                                      fe.unit_support_point(a));
+              where   = dofs.get_mapping().transform_unit_to_real_cell(
+                cell, fe.unit_support_point(a));
             }
       }
     return largest;
