@@ -5,6 +5,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
 #include <map>
 #include <numeric>
 
@@ -26,6 +27,7 @@ namespace amfrac
     for (unsigned int d = 0; d < dim; ++d)
       center[d] = p.center[d], velocity[d] = p.velocity[d];
     row_velocity = velocity;
+    start        = center;
   }
 
 
@@ -142,6 +144,70 @@ namespace amfrac
     n_contact    = order.size();
     penetration  = deepest;
     acceleration = force / mass;
+  }
+
+
+
+  template <int dim>
+  Tensor<2, dim>
+  RigidImpactor<dim>::node_tangent(const Node &node, const Vector &u) const
+  {
+    Tensor<1, dim> d;
+    for (unsigned int c = 0; c < dim; ++c)
+      d[c] = node.position[c] + u(node.dofs[c]) - center[c];
+    const double distance = d.norm();
+    const double gap      = distance - radius;
+    if (gap >= 0 || distance == 0)
+      return Tensor<2, dim>();
+    const Tensor<1, dim> n       = d / distance;
+    const Tensor<2, dim> normal  = outer_product(n, n);
+    const Tensor<2, dim> in_face = unit_symmetric_tensor<dim>() - normal;
+    // The gap's curvature term softens the tangential directions: a node
+    // pressed in by |g| slides around the sphere of radius r.
+    return node.stiffness * (normal + (gap / distance) * in_face);
+  }
+
+
+
+  template <int dim>
+  void
+  RigidImpactor<dim>::add_tangent(const Vector                    &u,
+                                  const AffineConstraints<double> &constraints,
+                                  TrilinosWrappers::SparseMatrix &tangent) const
+  {
+    FullMatrix<double>                   block(dim, dim);
+    std::vector<types::global_dof_index> dofs(dim);
+    for (const Node &node : nodes)
+      {
+        const Tensor<2, dim> k = node_tangent(node, u);
+        if (k.norm() == 0)
+          continue;
+        for (unsigned int a = 0; a < dim; ++a)
+          {
+            dofs[a] = node.dofs[a];
+            for (unsigned int b = 0; b < dim; ++b)
+              block(a, b) = k[a][b];
+          }
+        constraints.distribute_local_to_global(block, dofs, tangent);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  RigidImpactor<dim>::add_tangent_product(const Vector &u,
+                                          const Vector &direction,
+                                          Vector       &product) const
+  {
+    for (const Node &node : nodes)
+      {
+        const Tensor<2, dim> k = node_tangent(node, u);
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = 0; b < dim; ++b)
+            product(node.dofs[a]) += k[a][b] * direction(node.dofs[b]);
+      }
+    product.compress(VectorOperation::add);
   }
 
 

@@ -430,13 +430,24 @@ namespace amfrac
 
     if (!geometry.refinement_region.empty())
       {
-        const auto region = make_expression_function<dim>(
-          {geometry.refinement_region}, 1, "", "Geometry/Refinement region");
+        // The expression's "time" is h, the cell's longest edge.
+        const auto region
+          = make_expression_function<dim>({geometry.refinement_region},
+                                          1,
+                                          "",
+                                          "Geometry/Refinement region",
+                                          "h");
         for (unsigned int r = 0; r < geometry.region_refinements; ++r)
           {
             for (const auto &cell : triangulation.active_cell_iterators())
-              if (region->value(cell->center()) != 0.)
-                cell->set_refine_flag();
+              {
+                double h = 0;
+                for (const unsigned int l : cell->line_indices())
+                  h = std::max(h, cell->line(l)->diameter());
+                region->set_time(h);
+                if (region->value(cell->center()) != 0.)
+                  cell->set_refine_flag();
+              }
             if (dim == 3 && region_along_plies)
               keep_refinement_in_plane(
                 triangulation, RefinementCase<dim>(RefinementCase<3>::cut_xy));

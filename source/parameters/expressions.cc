@@ -57,7 +57,8 @@ namespace amfrac
   make_expression_function(const std::vector<std::string> &expressions,
                            const unsigned int              n_components,
                            const std::string              &constants,
-                           const std::string              &parameter)
+                           const std::string              &parameter,
+                           const std::string              &time_name)
   {
     std::vector<std::string> all = expressions;
     if (all.size() == 1)
@@ -88,7 +89,7 @@ namespace amfrac
     try
       {
         function->initialize(
-          FunctionParser<dim>::default_variable_names() + ",t",
+          FunctionParser<dim>::default_variable_names() + "," + time_name,
           all,
           parse_constants(constants, "Boundary conditions/Function constants"),
           true);
@@ -137,10 +138,12 @@ namespace amfrac
   make_expression_function<2>(const std::vector<std::string> &,
                               const unsigned int,
                               const std::string &,
+                              const std::string &,
                               const std::string &);
   template std::shared_ptr<Function<3>>
   make_expression_function<3>(const std::vector<std::string> &,
                               const unsigned int,
+                              const std::string &,
                               const std::string &,
                               const std::string &);
 } // namespace amfrac

@@ -15,10 +15,20 @@ namespace amfrac
         "Face",
         "none",
         Patterns::Selection("none|x-|x+|y-|y+|z-|z+"),
-        "A rigid sphere strikes this face of the laminate (explicit runs "
-        "only): the face's nodes inside the sphere are pushed out by a "
-        "penalty pressure, and the sphere feels the opposite force. none: no "
+        "A rigid sphere strikes or indents this face of the laminate: the "
+        "face's nodes inside the sphere are pushed out by a penalty "
+        "pressure, and the sphere feels the opposite force. none: no "
         "impactor.");
+      prm.declare_entry(
+        "Motion",
+        "free",
+        Patterns::Selection("free|prescribed"),
+        "free: the sphere has a Mass and starts at Center with Velocity, and "
+        "moves with the explicit time integration (Time/Time integration = "
+        "explicit). prescribed: its centre is Center + Velocity t, an "
+        "indenter driven through a static run (Time/Time integration = "
+        "static; the contact tangent enters Newton's matrix); the Mass is "
+        "not used.");
       prm.declare_entry("Radius",
                         "5",
                         Patterns::Double(0),
@@ -39,7 +49,9 @@ namespace amfrac
                         "0, 0, -10000",
                         Patterns::List(Patterns::Double(), 3, 3),
                         "Velocity of the sphere at t = 0 [mm/s] "
-                        "(-10000: 10 m/s towards -z).");
+                        "(-10000: 10 m/s towards -z); with Motion = "
+                        "prescribed its constant velocity [mm per unit of "
+                        "the load parameter t].");
       prm.declare_entry(
         "Penalty",
         "5e5",
@@ -70,7 +82,8 @@ namespace amfrac
         Utilities::split_string_list(prm.get("Center")));
       velocity = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Velocity")));
-      penalty = prm.get_double("Penalty");
+      penalty    = prm.get_double("Penalty");
+      prescribed = prm.get("Motion") == "prescribed";
       prm.leave_subsection();
       if (!active)
         return;

@@ -173,8 +173,13 @@ namespace amfrac
                         "",
                         Patterns::Anything(),
                         "Cells whose centre makes this expression of x, y, "
-                        "(z) nonzero are refined Region refinements times, "
-                        "after the distortion (hanging nodes), e.g. x < 2. "
+                        "(z) and h, the cell's longest edge [mm], nonzero "
+                        "are refined, Region refinements times, after the "
+                        "distortion (hanging nodes), e.g. x < 2. With h "
+                        "the refinement grades: sqrt(x^2 + y^2) < 0.5 + "
+                        "3*h refines every cell within 0.5 mm of the z "
+                        "axis and, outside, those within three of their "
+                        "own sizes of that cylinder. "
                         "In 3D scenes that adapt during their load history "
                         "(Adaptivity/Refine every, Error threshold, Process "
                         "zone elements) along the plies only, as that "
@@ -182,7 +187,7 @@ namespace amfrac
                         "refines every ply alike).");
       prm.declare_entry("Region refinements",
                         "1",
-                        Patterns::Integer(0, 5),
+                        Patterns::Integer(0, 8),
                         "How often the Refinement region is refined.");
       prm.declare_entry(
         "Imperfection",
@@ -1805,15 +1810,40 @@ namespace amfrac
       if (!impactor.active)
         return;
       const std::string face = "Impactor/Face";
-      require(time.explicit_dynamics,
+      require(!impactor.prescribed || !time.explicit_dynamics,
+              "Impactor/Motion",
+              "a prescribed sphere is an indenter for static runs: set "
+              "Time/Time integration = static, or Motion = free for an "
+              "impact");
+      require(impactor.prescribed || time.explicit_dynamics,
+              "Impactor/Motion",
+              "a free sphere moves with the explicit time integration: set "
+              "Time/Time integration = explicit, or Motion = prescribed for "
+              "a static indentation");
+      if (impactor.prescribed)
+        {
+          require(!nonlinear_solver.arc_length
+                    && !nonlinear_solver.dissipation_control,
+                  "Nonlinear solver/Control",
+                  "a prescribed sphere is driven by t: use Control = "
+                  "displacement with an Impactor");
+          require(!buckling.active(),
+                  "Buckling/Number of modes",
+                  "a linear buckling analysis does not include the "
+                  "impactor's contact yet; set it to 0 with an Impactor");
+          require(!adaptivity.active(),
+                  "Adaptivity/Refinement cycles",
+                  "the impactor's contact nodes are those of the initial "
+                  "mesh; refine the contact zone with Geometry/Refinement "
+                  "region instead");
+        }
+      require(!adaptivity.during_history() || time.explicit_dynamics,
               face,
-              "the impactor moves with the explicit time integration: it "
-              "needs Time/Time integration = explicit");
-      require(!adaptivity.during_history(),
-              face,
-              "the impactor's contact nodes are those of the initial mesh; "
-              "it cannot be combined yet with a mesh that adapts (Refine "
-              "every, Error threshold, Process zone elements)");
+              "a prescribed sphere cannot be combined yet with a mesh that "
+              "adapts during a static run (Refine every, Error threshold, "
+              "Process zone elements: in 3D they refine along the plies "
+              "only); refine the contact zone with Geometry/Refinement "
+              "region");
       require(!cracks.active,
               face,
               "the impactor cannot be combined yet with crack insertion "

@@ -592,6 +592,9 @@ namespace amfrac
     // The penalty energy of the contact between the bodies.
     auto body_contact_energy
       = [&]() { return body_contact ? body_contact->contact_energy() : 0.; };
+    // A mesh change moves the sphere's contact to the new face's nodes.
+    const auto sphere_contact_energy
+      = [&]() { return impactor ? impactor->contact_energy() : 0.; };
     auto ledger_row = [&](const double t_row) {
       relevant_solution                                   = solution;
       const double                                kinetic = kinetic_energy();
@@ -937,44 +940,51 @@ namespace amfrac
         if (at_row && adaptive && out < n_out)
           {
             // The output step is written: a new mesh starts the next.
-            adapt_state(
-              out,
-              t,
-              solution,
-              [&](const bool by_estimate, const double zz_relative) {
-                // prepare() takes a consistent velocity.
-                hanging->distribute(velocity);
-                MeshChange change;
-                change.by_estimate    = by_estimate;
-                change.zz_relative    = zz_relative;
-                change.kinetic_before = kinetic_energy();
-                change.energy_before
-                  = change.kinetic_before + strain_energy + interface_work();
-                change.momentum_before = linear_momentum();
-                if (interfaces)
-                  change.ledger_before = interfaces->ledger(comm);
-                change.report
-                  = move_explicit_state({&solution, &last_good}, velocity);
-                layout(false);
-                lump_mass();
-                split_mass();
-                build_operators();
-                choose_step();
-                if (interfaces)
-                  interfaces->set_time_step(dt);
-                base_steps = n, base_row = out, base_t = t;
-                impose_prescribed(t, solution);
-                update_damping();
-                evaluate(t);
-                change.kinetic_after = kinetic_energy();
-                change.energy_after
-                  = change.kinetic_after + strain_energy + interface_work();
-                change.momentum_after = linear_momentum();
-                if (interfaces)
-                  change.ledger_after = interfaces->ledger(comm);
-                remeshing_energy += change.energy_after - change.energy_before;
-                log_mesh_change(out, t, change);
-              });
+            adapt_state(out,
+                        t,
+                        solution,
+                        [&](const bool by_estimate, const double zz_relative) {
+                          // prepare() takes a consistent velocity.
+                          hanging->distribute(velocity);
+                          MeshChange change;
+                          change.by_estimate    = by_estimate;
+                          change.zz_relative    = zz_relative;
+                          change.kinetic_before = kinetic_energy();
+                          change.energy_before
+                            = change.kinetic_before + strain_energy
+                              + interface_work() + sphere_contact_energy();
+                          change.momentum_before = linear_momentum();
+                          if (interfaces)
+                            change.ledger_before = interfaces->ledger(comm);
+                          change.report
+                            = move_explicit_state({&solution, &last_good},
+                                                  velocity);
+                          layout(false);
+                          lump_mass();
+                          split_mass();
+                          build_operators();
+                          // The sphere keeps its centre and velocity; its
+                          // contact nodes are those of the new face.
+                          if (impactor)
+                            impactor->setup(dof_layer);
+                          choose_step();
+                          if (interfaces)
+                            interfaces->set_time_step(dt);
+                          base_steps = n, base_row = out, base_t = t;
+                          impose_prescribed(t, solution);
+                          update_damping();
+                          evaluate(t);
+                          change.kinetic_after = kinetic_energy();
+                          change.energy_after
+                            = change.kinetic_after + strain_energy
+                              + interface_work() + sphere_contact_energy();
+                          change.momentum_after = linear_momentum();
+                          if (interfaces)
+                            change.ledger_after = interfaces->ledger(comm);
+                          remeshing_energy
+                            += change.energy_after - change.energy_before;
+                          log_mesh_change(out, t, change);
+                        });
           }
         if (at_row || n % 10 == 0)
           checkpoint_after_step(out, n, at_row, n == steps_total(), save);

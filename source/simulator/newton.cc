@@ -124,6 +124,13 @@ namespace amfrac
                       &newton->load_unit,
                       &newton->arc_previous})
       v->reinit(owned, comm);
+    if (parameters.impactor.active && !parameters.time.explicit_dynamics)
+      {
+        newton->contact_force.reinit(owned, comm);
+        impactor
+          = std::make_unique<RigidImpactor<dim>>(parameters.impactor, comm);
+        impactor->setup(dof_layer);
+      }
     newton->interface_force.reinit(owned, relevant, comm, true);
     if (plasticity)
       newton->plastic_force.reinit(owned, relevant, comm, true);
@@ -165,6 +172,19 @@ namespace amfrac
         n.plastic_force = 0;
         plastic_ok      = add_plastic_correction(tangent);
         n.residual += n.plastic_force;
+      }
+    if (impactor)
+      {
+        // The sphere pushes the nodes it overlaps out: -k g n on them, so
+        // +k g n in the residual.
+        TimerOutput::Scope scope(timer, "impactor");
+        impactor->evaluate(trial, n.contact_force);
+        n.residual -= n.contact_force;
+        if (tangent)
+          {
+            impactor->add_tangent(trial, n.increment_constraints, *tangent);
+            tangent->compress(VectorOperation::add);
+          }
       }
     if (interfaces)
       {
@@ -267,6 +287,8 @@ namespace amfrac
     // + K_interfaces(relevant_solution) d, unconstrained.
     NewtonState &n = *newton;
     n.bulk_unconstrained.vmult(product, direction);
+    if (impactor)
+      impactor->add_tangent_product(relevant_solution, direction, product);
     if (!interfaces && !plasticity)
       return;
     Vector relevant_direction(dof_layer.locally_owned_dofs(),
@@ -684,6 +706,8 @@ namespace amfrac
       {
         TimerOutput::Scope scope(timer, "constraints");
         make_constraints(t, constraints, false);
+        if (impactor)
+          impactor->move_to(t);
         assembler.assemble_load(loads, t, n.external_load);
         solution = n.converged_solution;
         constraints.distribute(solution);
@@ -810,15 +834,65 @@ namespace amfrac
                              plasticity->max_kappa());
       }
     const double interface_work = add_interface_columns(columns);
+    const double contact_energy
+      = impactor ? add_static_impactor_columns(columns) : 0.;
     // Only scenes whose mesh changes during the history have the term.
     if (parameters.adaptivity.during_history())
       columns.emplace_back("remeshing_energy", n.remeshing_energy);
     columns.emplace_back("balance_error",
                          n.external_work + n.remeshing_energy - strain_energy
-                           - n.plastic_work - interface_work);
+                           - n.plastic_work - interface_work - contact_energy);
     n.previous_residual = n.residual;
     n.previous_load     = n.external_load;
     return columns;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::start_static_impactor(const double t)
+  {
+    NewtonState &n = *newton;
+    impactor->move_to(t);
+    impactor->evaluate(n.converged_solution, n.contact_force);
+    if (t == 0 && impactor->penetration_depth() > 0)
+      throw InputError("Impactor/Center",
+                       "the sphere overlaps the laminate at t = 0 (by "
+                         + std::to_string(impactor->penetration_depth())
+                         + " mm); start it clear of the face");
+    n.sphere_force  = impactor->force_on_laminate();
+    n.sphere_center = impactor->position();
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::add_static_impactor_columns(
+    std::vector<std::pair<std::string, double>> &columns)
+  {
+    NewtonState &n = *newton;
+    // The external work column is already in the row: the sphere's driver
+    // adds to it here. What drives the sphere holds it in balance with the
+    // laminate's push back, so it does the work F . dc by the trapezoidal
+    // rule.
+    impactor->evaluate(solution, n.contact_force);
+    const Tensor<1, dim> force = impactor->force_on_laminate();
+    const double         work  = 0.5 * (n.sphere_force + force)
+                        * (impactor->position() - n.sphere_center);
+    n.external_work += work;
+    n.sphere_force  = force;
+    n.sphere_center = impactor->position();
+    for (auto &[name, value] : columns)
+      if (name == "external_work")
+        value = n.external_work;
+    columns.emplace_back("impactor_position", impactor->normal_position());
+    columns.emplace_back("contact_force", impactor->normal_force());
+    columns.emplace_back("contact_energy", impactor->contact_energy());
+    columns.emplace_back("contact_nodes", impactor->contact_nodes());
+    columns.emplace_back("penetration", impactor->penetration_depth());
+    return impactor->contact_energy();
   }
 
 
@@ -951,7 +1025,9 @@ namespace amfrac
     if (p.arc_length)
       setup_load_pattern(true, "arc-length");
     // Arc-length: the step length (0: nominal, set by the first step).
-    double     arc      = 0;
+    double arc = 0;
+    if (impactor && !restart)
+      start_static_impactor(0.);
     const bool adaptive = parameters.adaptivity.during_history();
     if (adaptive && !restart)
       adapt_during_history(0, 0.);
@@ -979,6 +1055,8 @@ namespace amfrac
         total_iterations = progress.total_iterations;
         by_dissipation   = progress.by_dissipation;
         iterations       = progress.iterations;
+        if (impactor)
+          start_static_impactor(t);
       }
     const auto save = [&](CheckpointData &run, CheckpointData &part) {
       // Arc-length keeps its step length where dissipation control keeps

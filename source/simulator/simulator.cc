@@ -455,8 +455,9 @@ namespace amfrac
                        "on at least one face");
     // Refinement cycles repeat the whole run per mesh: they neither
     // checkpoint nor resume (the parameters refuse Every n steps there).
-    const bool resumable = parameters.time.explicit_dynamics || interfaces
-                           || finite_strain || plasticity
+    const bool nonlinear
+      = interfaces || finite_strain || plasticity || parameters.impactor.active;
+    const bool resumable = parameters.time.explicit_dynamics || nonlinear
                            || !parameters.adaptivity.active();
     if (restart && !resumable)
       throw InputError("Adaptivity/Refinement cycles",
@@ -503,7 +504,7 @@ namespace amfrac
       }
     if (parameters.time.explicit_dynamics)
       run_explicit();
-    else if (interfaces || finite_strain || plasticity)
+    else if (nonlinear)
       run_newton();
     else if (parameters.adaptivity.active())
       run_adaptive();

@@ -397,8 +397,44 @@ end'
 explicit='subsection Time
   set Time integration = explicit
 end'
-expect impactor_static "Impactor/Face" "$base
+expect impactor_static "Impactor/Motion" "$base
 $impactor"
+prescribed='subsection Impactor
+  set Motion = prescribed
+end'
+expect impactor_prescribed_explicit "Impactor/Motion" "$base
+$impactor
+$explicit
+$prescribed"
+expect impactor_prescribed_overlap "Impactor/Center" "$base
+$impactor
+$prescribed
+subsection Impactor
+  set Center = 0.5, 0.5, 5
+end
+subsection Boundary conditions
+  subsection z-
+    set Type = displacement
+  end
+end"
+expect impactor_prescribed_dissipation "Nonlinear solver/Control" "$base
+$impactor
+$prescribed
+subsection Nonlinear solver
+  set Control = dissipation
+end"
+expect impactor_prescribed_buckling "Buckling/Number of modes" "$base
+$impactor
+$prescribed
+subsection Buckling
+  set Number of modes = 2
+end"
+expect impactor_prescribed_cycles "Adaptivity/Refinement cycles" "$base
+$impactor
+$prescribed
+subsection Adaptivity
+  set Refinement cycles = 1
+end"
 expect impactor_2d "Impactor/Face" "$(with 'set Dimension = 3' 'set Dimension = 2')
 $impactor
 $explicit"
@@ -416,7 +452,10 @@ subsection Impactor
 end"
 expect impactor_adaptive "Impactor/Face" "$base
 $impactor
-$explicit
+$prescribed
+subsection Cohesive interfaces
+  set Interfaces = 1
+end
 subsection Adaptivity
   set Refine every = 1
 end"
@@ -501,6 +540,10 @@ subsection Cohesive interfaces
 end
 subsection Time
   set Time integration = explicit
+end"
+expect region_time "Geometry/Refinement region" "$base
+subsection Geometry
+  set Refinement region = x < t
 end"
 expect prism_region "Geometry/Element shape" "$base
 $prism

@@ -4,6 +4,8 @@
 #include <amfrac/parameters/impactor.h>
 #include <array>
 #include <deal.II/base/tensor.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <string>
 #include <utility>
@@ -46,6 +48,64 @@ namespace amfrac
      * the sphere and its acceleration, and the contact energy. Collective. */
     void
     evaluate(const Vector &u, Vector &contact);
+
+    /** A prescribed sphere: its centre at time @p t, Center + Velocity t. */
+    void
+    move_to(const double t)
+    {
+      center = start + t * velocity;
+    }
+
+    /** Static runs: the contact tangent at @p u (owned entries),
+     * d(k g n)/du = k (n n^T + g / r (I - n n^T)) per node in contact with
+     * r = |x - c|, into @p tangent through @p constraints (hanging nodes
+     * hand it to their parents). Not compressed. */
+    void
+    add_tangent(const Vector                    &u,
+                const AffineConstraints<double> &constraints,
+                TrilinosWrappers::SparseMatrix  &tangent) const;
+
+    /** The same tangent times @p direction added to @p product (owned
+     * entries, unconstrained). */
+    void
+    add_tangent_product(const Vector &u,
+                        const Vector &direction,
+                        Vector       &product) const;
+
+    /** The force of the sphere on the laminate along the face's inward
+     * normal at the last evaluate(), all ranks. */
+    double
+    normal_force() const
+    {
+      return -inward * force[normal_axis];
+    }
+
+    /** The centre's coordinate along the face's normal. */
+    double
+    normal_position() const
+    {
+      return center[normal_axis];
+    }
+
+    /** The nodes in contact at the last evaluate(), all ranks. */
+    unsigned int
+    contact_nodes() const
+    {
+      return n_contact;
+    }
+
+    /** The force of the sphere on the laminate at the last evaluate(). */
+    Tensor<1, dim>
+    force_on_laminate() const
+    {
+      return -force;
+    }
+
+    Tensor<1, dim>
+    position() const
+    {
+      return center;
+    }
 
     void
     kick(const double half_step)
@@ -127,15 +187,21 @@ namespace amfrac
       double                                   stiffness;
     };
 
+    /** The contact tangent of @p node at @p u (zero out of contact). */
+    Tensor<2, dim>
+    node_tangent(const Node &node, const Vector &u) const;
+
     MPI_Comm          comm;
     double            radius, mass, penalty;
     unsigned int      boundary_id, normal_axis;
     double            inward; // -1 on a + face, +1 on a - face
     std::vector<Node> nodes;
     Tensor<1, dim>    center, velocity, acceleration, force;
-    Tensor<1, dim>    row_velocity;
-    double            row_time = 0;
-    double            energy = 0, penetration = 0;
-    unsigned int      n_contact = 0;
+    /** Center at t = 0 (a prescribed sphere moves from it). */
+    Tensor<1, dim> start;
+    Tensor<1, dim> row_velocity;
+    double         row_time = 0;
+    double         energy = 0, penetration = 0;
+    unsigned int   n_contact = 0;
   };
 } // namespace amfrac

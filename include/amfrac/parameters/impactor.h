@@ -10,9 +10,10 @@ namespace amfrac
   {
     using namespace dealii;
 
-    /** `subsection Impactor`: a rigid sphere with a mass and an initial
-     * velocity that strikes one face of the laminate through penalty
-     * contact (explicit runs; RigidImpactor). */
+    /** `subsection Impactor`: a rigid sphere that touches one face of the
+     * laminate through penalty contact (RigidImpactor): free, with a mass
+     * and an initial velocity (explicit runs), or prescribed, its centre
+     * moving at a constant velocity (static runs). */
     struct Impactor
     {
       bool active = false;
@@ -25,6 +26,8 @@ namespace amfrac
       std::vector<double> center, velocity;
       /** Contact pressure per unit penetration [N/mm^3]. */
       double penalty = 0;
+      /** The centre follows Center + Velocity t (static runs). */
+      bool prescribed = false;
 
       static void
       declare_parameters(ParameterHandler &prm);

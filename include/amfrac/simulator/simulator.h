@@ -217,7 +217,8 @@ namespace amfrac
     std::unique_ptr<FieldOutput<dim>>        field_output;
     std::unique_ptr<InterfaceOutput<dim>>    interface_output;
     std::unique_ptr<CohesiveInterfaces<dim>> interfaces;
-    /** Explicit runs with an Impactor subsection (nullptr otherwise). */
+    /** Runs with an Impactor subsection (nullptr otherwise): a free sphere
+     * in explicit runs, a prescribed one in static runs. */
     std::unique_ptr<RigidImpactor<dim>> impactor;
     /** Explicit runs with Contact/Enable (nullptr otherwise). */
     std::unique_ptr<BodyContact<dim>> body_contact;
@@ -314,6 +315,11 @@ namespace amfrac
       Vector arc_previous;
       double arc_scale   = 0;
       double arc_nominal = 0;
+      /** A prescribed sphere: its forces on the laminate (owned entries),
+       * and its total force and centre at the last converged step (for the
+       * trapezoidal work of what drives it, part of external_work). */
+      Vector         contact_force;
+      Tensor<1, dim> sphere_force, sphere_center;
     };
     /** Adaptivity: the current cycle, the estimate of its last step
      * (the marking criterion), its zz estimate (reported), the last
@@ -799,6 +805,16 @@ namespace amfrac
     bulk_strain_energy(const Vector &u) const;
     void
     setup_newton();
+    /** A prescribed sphere at time @p t and the converged state: its force
+     * and centre, from which the next step's work is counted. At t = 0 it
+     * must not touch the laminate. */
+    void
+    start_static_impactor(const double t);
+    /** The sphere's columns of a converged step, its driver's work added
+     * to the external work; returns the contact energy. */
+    double
+    add_static_impactor_columns(
+      std::vector<std::pair<std::string, double>> &columns);
     NewtonReport
     solve_newton_step(const double t, LinearSolver &solver);
     /** The condensed residual (and its norm) from NewtonState::residual;

@@ -1,0 +1,186 @@
+// A prescribed rigid sphere on the static Newton path (issue 10), on
+// prm/hertz_indentation.prm:
+// - flat: one cell, a 1 x 1 x 1 mm block (nu = 0: the corners stay where
+//   they touch), free sideways, pressed by a sphere of radius 1e4 mm
+//   centred over it, so that its four top corners are equally far from the
+//   sphere's axis and touch it together at t = 0: uniaxial compression, the
+//   block and the penalty springs in series, F = A d / (H / E + 1 /
+//   Penalty), to 1e-6; the driver's work equals the strain plus the contact
+//   energy to 1e-8 of it (F is linear in d, so the trapezoidal work is
+//   exact); the deepest penetration F / Penalty to 1e-4; Newton takes at
+//   most 2 iterations per step;
+// - hertz: the scene. Force against indentation within 5 % of Hertz's law
+//   F = 4/3 E* sqrt(R) d^(3/2) at every step (the issue's figure) and 1 %
+//   at the first; the peak pressure (Penalty times the deepest
+//   penetration) within 3 % of Hertz's p0 = (6 F E*^2 / (pi^3 R^2))^(1/3)
+//   once the contact radius spans 4 cells; a least-squares fit
+//   d = alpha F^(2/3) + C F gives alpha within 1 % of Hertz's and a
+//   negative C (the finite block with a held bottom is stiffer than the
+//   half-space) within 0.5 to 4 times Boussinesq's far-field compliance
+//   (1 + nu)(3 - 2 nu) / (2 pi E H); the balance error equals the
+//   trapezoidal rule's error for the driver's work F ~ d^(3/2) within
+//   25 %; Newton takes at most 4 iterations per step (the contact tangent
+//   and the predictor are consistent).
+// usage: app_hertz_indentation flat|hertz SCENE.prm WORKDIR
+#include "../check.h"
+#include "scene.h"
+
+#include <amfrac/simulator/simulator.h>
+#include <cmath>
+#include <deal.II/base/mpi.h>
+#include <iomanip>
+#include <sstream>
+
+using namespace amfrac;
+
+namespace
+{
+  const double E = 70000, nu = 0.3, radius = 5, H = 20;
+
+  std::string
+  output(const std::string &workdir)
+  {
+    return "subsection Output\n  set Directory = " + workdir
+           + "\n  set Field format = none\nend\n";
+  }
+
+  void
+  flat(const std::string &prm, const std::string &workdir)
+  {
+    const double R = 1e4, penalty = 1e6, d = 0.01;
+    // The corners lie sqrt(0.5) from the axis: the centre's height over the
+    // face at which they touch the sphere.
+    const double       height = std::sqrt(R * R - 0.5);
+    std::ostringstream text;
+    text << std::setprecision(17)
+         << "subsection Geometry\n  set Ply thickness = 1\n  set Length = 1\n"
+         << "  set Width = 1\n  set Elements along length = 1\n"
+         << "  set Elements along width = 1\n  set Elements per ply = 1\n"
+         << "  set Region refinements = 0\nend\n"
+         << "subsection Materials\n  set nu12 = 0\n  set nu13 = 0\n"
+         << "  set nu23 = 0\nend\n"
+         << "subsection Boundary conditions\n  subsection z-\n"
+         << "    set Components = z\n  end\nend\n"
+         << "subsection Impactor\n  set Radius = " << R
+         << "\n  set Center = 0.5, 0.5, " << 1 + height
+         << "\n  set Penalty = " << penalty << "\nend\n"
+         << "subsection Time\n  set End time = " << d
+         << "\n  set Number of steps = 4\nend\n"
+         << output(workdir);
+    const auto     simulator = amfrac_test::run_scene<3>(prm, text.str());
+    const History &h         = simulator->history();
+    CHECK(h.n_rows() == 4);
+    for (std::size_t r = 0; r < h.n_rows(); ++r)
+      {
+        const double t        = h.value(r, "time");
+        const double expected = t / (1 / E + 1 / penalty);
+        const double work     = h.value(r, "external_work");
+        std::cout << "d = " << t << ": F " << h.value(r, "contact_force")
+                  << " (" << expected << "), balance "
+                  << h.value(r, "balance_error") / work << " of the work, "
+                  << h.value(r, "newton_iterations") << " iterations"
+                  << std::endl;
+        CHECK_CLOSE(h.value(r, "contact_force"), expected, 1e-6 * expected);
+        CHECK(h.value(r, "contact_nodes") == 4);
+        // The deepest corner: the sphere's normal leans out by
+        // r / R = 7e-5 there and shears the cell a little, so the four
+        // penetrations differ by about that fraction.
+        CHECK_CLOSE(h.value(r, "penetration"),
+                    expected / penalty,
+                    1e-4 * expected / penalty);
+        CHECK_CLOSE(h.value(r, "contact_energy"),
+                    0.5 * expected * expected / penalty,
+                    1e-6 * work);
+        CHECK(std::abs(h.value(r, "balance_error")) < 1e-8 * work);
+        CHECK(h.value(r, "newton_iterations") <= 2);
+      }
+  }
+
+  /** The relative error of the trapezoidal rule on n equal steps for a
+   * force growing like d^(3/2) from 0. */
+  double
+  trapezoid_error(const unsigned int n)
+  {
+    double sum = 0.5 * std::pow(n, 1.5);
+    for (unsigned int i = 1; i < n; ++i)
+      sum += std::pow(i, 1.5);
+    const double exact = 0.4 * std::pow(n, 2.5);
+    return (sum - exact) / exact;
+  }
+
+  void
+  hertz(const std::string &prm, const std::string &workdir)
+  {
+    const auto     simulator = amfrac_test::run_scene<3>(prm, output(workdir));
+    const History &h         = simulator->history();
+    const double   Es        = E / (1 - nu * nu);
+    const double   penalty   = 1e8;
+    const double   cell      = 5. / 128; // 7 refinements of 5 mm cells
+    CHECK(h.n_rows() == 12);
+    // Least squares d = alpha F^(2/3) + C F: the normal equations.
+    double aa = 0, ab = 0, bb = 0, ad = 0, bd = 0;
+    for (std::size_t r = 0; r < h.n_rows(); ++r)
+      {
+        const double d  = h.value(r, "time");
+        const double F  = 4 * h.value(r, "contact_force"); // quarter model
+        const double Fh = 4. / 3 * Es * std::sqrt(radius) * std::pow(d, 1.5);
+        const double a  = std::sqrt(radius * d);
+        const double p0
+          = std::cbrt(6 * F * Es * Es / (std::pow(M_PI, 3) * radius * radius));
+        const double peak = penalty * h.value(r, "penetration");
+        std::cout << "d = " << d << " mm: F " << F << " N, Hertz " << Fh << " ("
+                  << F / Fh - 1 << "), peak pressure " << peak << " MPa, Hertz "
+                  << p0 << " (" << peak / p0 - 1 << "), "
+                  << h.value(r, "newton_iterations") << " iterations"
+                  << std::endl;
+        CHECK_CLOSE(F, Fh, (r == 0 ? 0.01 : 0.05) * Fh);
+        if (a > 4 * cell)
+          CHECK_CLOSE(peak, p0, 0.03 * p0);
+        CHECK(h.value(r, "newton_iterations") <= 4);
+        const double f = std::pow(F, 2. / 3);
+        aa += f * f, ab += f * F, bb += F * F, ad += f * d, bd += F * d;
+      }
+    const double det   = aa * bb - ab * ab;
+    const double alpha = (ad * bb - ab * bd) / det;
+    const double C     = (aa * bd - ab * ad) / det;
+    const double alpha_hertz
+      = std::cbrt(9. / (16 * Es * Es * radius)); // d = alpha_H F^(2/3)
+    const double boussinesq = (1 + nu) * (3 - 2 * nu) / (2 * M_PI * E * H);
+    std::cout << "fit: alpha / alpha_Hertz " << alpha / alpha_hertz << ", C "
+              << C << " mm/N (Boussinesq's far field " << -boussinesq << ")"
+              << std::endl;
+    CHECK_CLOSE(alpha / alpha_hertz, 1., 0.01);
+    CHECK(C < -0.5 * boussinesq && C > -4 * boussinesq);
+
+    const std::size_t last     = h.n_rows() - 1;
+    const double      work     = h.value(last, "external_work");
+    const double      expected = trapezoid_error(h.n_rows()) * work;
+    std::cout << "balance " << h.value(last, "balance_error")
+              << " N mm, the trapezoidal rule's error " << expected << " of "
+              << work << " N mm" << std::endl;
+    CHECK_CLOSE(h.value(last, "balance_error"), expected, 0.25 * expected);
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  try
+    {
+      AssertThrow(argc == 4,
+                  ExcMessage("usage: app_hertz_indentation flat|hertz "
+                             "SCENE.prm WORKDIR"));
+      const std::string which = argv[1];
+      if (which == "flat")
+        flat(argv[2], argv[3]);
+      else
+        hertz(argv[2], argv[3]);
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << e.what() << std::endl;
+      return 1;
+    }
+  return amfrac_test::failures;
+}
