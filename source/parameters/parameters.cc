@@ -1605,20 +1605,26 @@ namespace amfrac
                          "with an out-of-plane direction: it needs "
                          "Time/Time integration = static and not 2D model "
                          "= in-plane");
-      check_arc_length_input();
       checkpoint.parse_parameters(prm, output.directory);
       cracks.parse_parameters(prm, geometry.plies.size());
+      // Before the checks of the Newton path: a prescribed sphere puts a
+      // static run on it, and refuses what it cannot follow with its own
+      // reason.
+      impactor.parse_parameters(prm, dimension);
+      check_impactor_input();
+      check_arc_length_input();
       // Only the Newton path counts its steps against the limit; a linear
       // or explicit run would silently ignore it.
       if (nonlinear_solver.max_steps > 0
           && (time.explicit_dynamics
               || (cohesive.interfaces.empty() && !cracks.active
-                  && !total_lagrangian && !plastic_plies)))
+                  && !total_lagrangian && !plastic_plies && !impactor.active)))
         throw InputError("Nonlinear solver/Maximum steps",
                          "ends runs on the static Newton path (cohesive "
                          "interfaces, crack insertion, total Lagrangian "
-                         "kinematics or plastic plies), and this run is "
-                         "not one: shorten Time/End time instead");
+                         "kinematics, plastic plies or a prescribed "
+                         "sphere), and this run is not one: shorten "
+                         "Time/End time instead");
       if (adaptivity.during_history() && cohesive.interfaces.empty()
           && ((!cracks.active && !time.explicit_dynamics && !plastic_plies)
               || adaptivity.process_zone_elements > 0))
@@ -1653,8 +1659,6 @@ namespace amfrac
                          "history (cohesive interfaces) can");
       if (time.explicit_dynamics)
         check_explicit_adaptivity_input();
-      impactor.parse_parameters(prm, dimension);
-      check_impactor_input();
       contact.parse_parameters(prm, geometry.plies.size());
       check_contact_input();
       check_plasticity_input();

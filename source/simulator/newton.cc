@@ -856,7 +856,10 @@ namespace amfrac
     NewtonState &n = *newton;
     impactor->move_to(t);
     impactor->evaluate(n.converged_solution, n.contact_force);
-    if (t == 0 && impactor->penetration_depth() > 0)
+    // Touching is allowed: a sphere placed on the face may overlap it by
+    // the round-off of its centre's coordinates.
+    if (t == 0
+        && impactor->penetration_depth() > 1e-12 * parameters.impactor.radius)
       throw InputError("Impactor/Center",
                        "the sphere overlaps the laminate at t = 0 (by "
                          + std::to_string(impactor->penetration_depth())

@@ -335,7 +335,7 @@ namespace
               << " of the sphere's energy" << std::endl;
     CHECK(velocity < 0.01 * speed);
     CHECK(force < 0.1 * peak);
-    CHECK(in_contact >= 5);
+    CHECK(in_contact == a.n_rows() && a.n_rows() >= 19);
     CHECK(largest(a, "cells") < 0.3 * 12800);
     CHECK(largest(h, "balance_error") < 1e-5 * energy);
   }

@@ -172,6 +172,8 @@ main(int argc, char **argv)
                   ExcMessage("usage: app_hertz_indentation flat|hertz "
                              "SCENE.prm WORKDIR"));
       const std::string which = argv[1];
+      AssertThrow(which == "flat" || which == "hertz",
+                  ExcMessage("unknown case '" + which + "'"));
       if (which == "flat")
         flat(argv[2], argv[3]);
       else
