@@ -22,7 +22,8 @@ namespace amfrac
     , normal_axis(p.boundary_id / 2)
     , inward(p.boundary_id % 2 == 1 ? -1. : 1.)
   {
-    AssertThrow(p.center.size() == dim && p.velocity.size() == dim,
+    // 2D: the first two of the three components (x and the thickness y).
+    AssertThrow(p.center.size() >= dim && p.velocity.size() >= dim,
                 ExcInternalError());
     for (unsigned int d = 0; d < dim; ++d)
       center[d] = p.center[d], velocity[d] = p.velocity[d];

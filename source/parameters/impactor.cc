@@ -17,8 +17,10 @@ namespace amfrac
         Patterns::Selection("none|x-|x+|y-|y+|z-|z+"),
         "A rigid sphere strikes or indents this face of the laminate: the "
         "face's nodes inside the sphere are pushed out by a penalty "
-        "pressure, and the sphere feels the opposite force. none: no "
-        "impactor.");
+        "pressure, and the sphere feels the opposite force. In 2D (the "
+        "cross-section, plane strain) it is a cylinder along the width, "
+        "x and y the first two components of Center and Velocity (the third "
+        "is not used), its forces per unit width. none: no impactor.");
       prm.declare_entry(
         "Motion",
         "free",
@@ -87,9 +89,17 @@ namespace amfrac
       prm.leave_subsection();
       if (!active)
         return;
-      require(dim == 3,
+      // In 2D (the cross-section, plane strain) the sphere is a cylinder
+      // along the laminate's width: a circle in the x-y plane.
+      require(dim == 3 || prescribed,
+              path + "Motion",
+              "in 2D the impactor is a cylinder along the width, so far "
+              "only as an indenter in static runs: set Motion = prescribed, "
+              "or Dimension = 3 for an impact");
+      require(dim == 3 || face[0] != 'z',
               path + "Face",
-              "the impactor is a sphere: it needs Dimension = 3");
+              "a 2D laminate has the faces x-, x+, y- and y+ (y is its "
+              "thickness)");
       boundary_id = 2 * (face[0] - 'x') + (face[1] == '+' ? 1 : 0);
       require(radius > 0, path + "Radius", "must be positive");
       require(mass > 0, path + "Mass", "must be positive");

@@ -1824,6 +1824,11 @@ namespace amfrac
               "a free sphere moves with the explicit time integration: set "
               "Time/Time integration = explicit, or Motion = prescribed for "
               "a static indentation");
+      require(!geometry.in_plane,
+              face,
+              "the in-plane 2D model has no thickness to indent; use "
+              "Dimension = 3 or the cross-section (2D model = "
+              "cross-section)");
       if (impactor.prescribed)
         {
           require(!nonlinear_solver.arc_length

@@ -435,9 +435,20 @@ $prescribed
 subsection Adaptivity
   set Refinement cycles = 1
 end"
-expect impactor_2d "Impactor/Face" "$(with 'set Dimension = 3' 'set Dimension = 2')
+expect impactor_2d "Impactor/Motion" "$(with 'set Dimension = 3' 'set Dimension = 2')
 $impactor
 $explicit"
+expect impactor_2d_face "Impactor/Face" "$(with 'set Dimension = 3' 'set Dimension = 2')
+$impactor
+$prescribed"
+expect impactor_in_plane "Impactor/Face" "$(with 'set Dimension = 3' 'set Dimension = 2')
+subsection Geometry
+  set 2D model = in-plane
+end
+subsection Impactor
+  set Face = y+
+  set Motion = prescribed
+end"
 expect impactor_mass "Impactor/Mass" "$base
 $impactor
 $explicit

@@ -21,7 +21,13 @@
 //   trapezoidal rule's error for the driver's work F ~ d^(3/2) within
 //   25 %; Newton takes at most 4 iterations per step (the contact tangent
 //   and the predictor are consistent).
-// usage: app_hertz_indentation flat|hertz SCENE.prm WORKDIR
+// - cylinder: prm/hertz_cylinder_2d.prm, a cylinder pressed into a block in
+//   plane strain: against the force per unit length F' the run measures,
+//   Hertz's peak pressure p0 = sqrt(F' E* / (pi R)) within 1 % (measured
+//   0.42 to 0.64 %) and his half-width a = sqrt(4 F' R / (pi E*)) within a
+//   cell of the edge of the nodes in contact, once a spans 6 cells; Newton
+//   takes at most 5 iterations per step (4, once 5).
+// usage: app_hertz_indentation flat|hertz|cylinder SCENE.prm WORKDIR
 #include "../check.h"
 #include "scene.h"
 
@@ -160,6 +166,45 @@ namespace
               << work << " N mm" << std::endl;
     CHECK_CLOSE(h.value(last, "balance_error"), expected, 0.25 * expected);
   }
+
+  /** Hertz's line contact in plane strain: a cylinder pressed into the
+   * block of @p prm (prm/hertz_cylinder_2d.prm, a half model). */
+  void
+  cylinder(const std::string &prm, const std::string &workdir)
+  {
+    const auto     simulator = amfrac_test::run_scene<2>(prm, output(workdir));
+    const History &h         = simulator->history();
+    const double   Es        = E / (1 - nu * nu);
+    const double   penalty   = 1e8;
+    const double   cell      = 5. / 256; // 8 refinements of 5 mm cells
+    CHECK(h.n_rows() == 10);
+    for (std::size_t r = 0; r < h.n_rows(); ++r)
+      {
+        const double F     = 2 * h.value(r, "contact_force"); // N/mm
+        const double a     = std::sqrt(4 * F * radius / (M_PI * Es));
+        const double p0    = std::sqrt(F * Es / (M_PI * radius));
+        const double peak  = penalty * h.value(r, "penetration");
+        const double nodes = h.value(r, "contact_nodes");
+        // The nodes in contact lie at x = 0, h, ..., (n - 1) h: the edge
+        // of the contact lies between the last of them and the next.
+        const double edge = (nodes - 0.5) * cell;
+        std::cout << "d = " << h.value(r, "time") << " mm: F' " << F
+                  << " N/mm, peak pressure " << peak << " MPa, Hertz " << p0
+                  << " (" << peak / p0 - 1 << "), half-width " << edge << " +- "
+                  << 0.5 * cell << " mm, Hertz " << a << ", "
+                  << h.value(r, "newton_iterations") << " iterations"
+                  << std::endl;
+        if (a > 6 * cell)
+          {
+            CHECK_CLOSE(peak, p0, 0.01 * p0);
+            CHECK_CLOSE(edge, a, cell);
+          }
+        // The contact set grows by a node or two per step and settles in
+        // two or three iterations; then Newton converges quadratically.
+        CHECK(h.value(r, "newton_iterations") <= 5);
+      }
+    CHECK(2 * h.value(h.n_rows() - 1, "contact_force") > 500);
+  }
 } // namespace
 
 int
@@ -169,13 +214,15 @@ main(int argc, char **argv)
   try
     {
       AssertThrow(argc == 4,
-                  ExcMessage("usage: app_hertz_indentation flat|hertz "
-                             "SCENE.prm WORKDIR"));
+                  ExcMessage("usage: app_hertz_indentation "
+                             "flat|hertz|cylinder SCENE.prm WORKDIR"));
       const std::string which = argv[1];
-      AssertThrow(which == "flat" || which == "hertz",
+      AssertThrow(which == "flat" || which == "hertz" || which == "cylinder",
                   ExcMessage("unknown case '" + which + "'"));
       if (which == "flat")
         flat(argv[2], argv[3]);
+      else if (which == "cylinder")
+        cylinder(argv[2], argv[3]);
       else
         hertz(argv[2], argv[3]);
     }
