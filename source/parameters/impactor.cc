@@ -91,11 +91,6 @@ namespace amfrac
         return;
       // In 2D (the cross-section, plane strain) the sphere is a cylinder
       // along the laminate's width: a circle in the x-y plane.
-      require(dim == 3 || prescribed,
-              path + "Motion",
-              "in 2D the impactor is a cylinder along the width, so far "
-              "only as an indenter in static runs: set Motion = prescribed, "
-              "or Dimension = 3 for an impact");
       require(dim == 3 || face[0] != 'z',
               path + "Face",
               "a 2D laminate has the faces x-, x+, y- and y+ (y is its "

@@ -435,7 +435,7 @@ $prescribed
 subsection Adaptivity
   set Refinement cycles = 1
 end"
-expect impactor_2d "Impactor/Motion" "$(with 'set Dimension = 3' 'set Dimension = 2')
+expect impactor_2d "Impactor/Face" "$(with 'set Dimension = 3' 'set Dimension = 2')
 $impactor
 $explicit"
 expect impactor_2d_face "Impactor/Face" "$(with 'set Dimension = 3' 'set Dimension = 2')

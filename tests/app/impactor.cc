@@ -13,7 +13,9 @@
 // - scene: tests/app/impactor_coarse.prm (20 x 20 cells, 20 us) on the
 //   clamped plate with its two cohesive interfaces: the balance within 2 %
 //   of the sphere's energy, contact, the sphere slowed.
-// usage: app_impactor wall|free|scene SCENE.prm COARSE.prm WORKDIR
+// - wall_2d: the same in a 2D cross-section, where the sphere is a cylinder
+//   (per unit width) and the corner node's spring k = Penalty * h / 2.
+// usage: app_impactor wall|wall_2d|free|scene SCENE.prm COARSE.prm WORKDIR
 #include "../check.h"
 #include "scene.h"
 
@@ -61,25 +63,19 @@ namespace
     return text.str();
   }
 
+  /** A single contact spring of stiffness @p k against the harmonic
+   * oscillator: the largest penetration v sqrt(m / k) and force
+   * v sqrt(m k) within 1 %, contact for pi sqrt(m / k) within 2 %, the
+   * rebound at the impact speed within 1 %, the balance within 1 % of the
+   * sphere's energy. */
   void
-  wall(const std::string &prm, const std::string &workdir)
+  check_single_spring(const History &h, const double k)
   {
-    std::string held;
-    for (const char *face : {"x-", "x+", "y-", "y+", "z-", "z+"})
-      held += std::string("subsection Boundary conditions\n  subsection ")
-              + face
-              + "\n    set Type = displacement\n    set Components = "
-                "x, y, z\n  end\nend\n";
-    const auto simulator
-      = amfrac_test::run_scene<3>(prm,
-                                  small_plate(1.2e-5, 300, workdir) + held);
-    const History &h     = simulator->history();
-    const double   k     = penalty * 0.25; // the corner node's quarter cell
-    const double   depth = speed * std::sqrt(mass / k);
-    const double   force = speed * std::sqrt(mass * k);
-    const double   lasts = M_PI * std::sqrt(mass / k);
-    const double   start = 0.001 / speed; // the initial gap
-    double         last_contact = 0, energy = 0;
+    const double depth        = speed * std::sqrt(mass / k);
+    const double force        = speed * std::sqrt(mass * k);
+    const double lasts        = M_PI * std::sqrt(mass / k);
+    const double start        = 0.001 / speed; // the initial gap
+    double       last_contact = 0, energy = 0;
     for (std::size_t r = 0; r < h.n_rows(); ++r)
       {
         CHECK(h.value(r, "contact_nodes") <= 1);
@@ -100,6 +96,55 @@ namespace
     CHECK_CLOSE(last_contact, start + lasts, 0.02 * lasts);
     CHECK_CLOSE(h.value(last, "impactor_velocity"), speed, 0.01 * speed);
     CHECK(energy < 0.01 * 0.5 * mass * speed * speed);
+  }
+
+  void
+  wall(const std::string &prm, const std::string &workdir)
+  {
+    std::string held;
+    for (const char *face : {"x-", "x+", "y-", "y+", "z-", "z+"})
+      held += std::string("subsection Boundary conditions\n  subsection ")
+              + face
+              + "\n    set Type = displacement\n    set Components = "
+                "x, y, z\n  end\nend\n";
+    const auto simulator
+      = amfrac_test::run_scene<3>(prm,
+                                  small_plate(1.2e-5, 300, workdir) + held);
+    // The corner node's quarter cell.
+    check_single_spring(simulator->history(), penalty * 0.25);
+  }
+
+  /** The same in 2D: a cylinder (per unit width) on the held cross-section
+   * of a 10 mm strip, 1 mm cells; the corner node's half cell edge. */
+  void
+  wall_2d(const std::string &workdir)
+  {
+    std::ostringstream text;
+    text << "set Dimension = 2\nsubsection Geometry\n"
+         << "  set Stacking sequence = [0]\n  set Ply thickness = 2\n"
+         << "  set Length = 10\n  set Elements along length = 10\n"
+         << "  set Elements per ply = 2\nend\n"
+         << "subsection Materials\n  set E1 = 135300\n  set E2 = 9000\n"
+         << "  set E3 = 9000\n  set G12 = 5200\n  set G13 = 5200\n"
+         << "  set G23 = 3460\n  set nu12 = 0.24\n  set nu13 = 0.24\n"
+         << "  set nu23 = 0.3\n  set Density = 1.6e-9\nend\n";
+    for (const char *face : {"x-", "x+", "y-", "y+"})
+      text << "subsection Boundary conditions\n  subsection " << face
+           << "\n    set Type = displacement\n    set Components = x, y\n"
+           << "  end\nend\n";
+    text << "subsection Impactor\n  set Face = y+\n  set Radius = 5\n"
+         << "  set Mass = " << mass << "\n  set Center = 0, 7.001, 0\n"
+         << "  set Velocity = 0, " << -speed
+         << ", 0\n  set Penalty = " << penalty << "\nend\n"
+         << "subsection Time\n  set Time integration = explicit\n"
+         << "  set Safety factor = 0.8\n  set End time = 1.2e-5\n"
+         << "  set Number of steps = 300\nend\n"
+         << "subsection Output\n  set Directory = " << workdir
+         << "\n  set Field format = none\nend\n";
+    Simulator<2> simulator(parameters::Parameters::from_string(text.str()),
+                           MPI_COMM_WORLD);
+    simulator.run();
+    check_single_spring(simulator.history(), penalty * 0.5);
   }
 
   void
@@ -163,11 +208,13 @@ main(int argc, char **argv)
   try
     {
       AssertThrow(argc == 5,
-                  ExcMessage("usage: app_impactor wall|free|scene "
+                  ExcMessage("usage: app_impactor wall|wall_2d|free|scene "
                              "SCENE.prm COARSE.prm WORKDIR"));
       const std::string which = argv[1];
       if (which == "wall")
         wall(argv[2], argv[4]);
+      else if (which == "wall_2d")
+        wall_2d(argv[4]);
       else if (which == "free")
         free_plate(argv[2], argv[4]);
       else
