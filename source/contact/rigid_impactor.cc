@@ -8,9 +8,31 @@
 #include <deal.II/lac/full_matrix.h>
 #include <map>
 #include <numeric>
+#include <tuple>
 
 namespace amfrac
 {
+  namespace
+  {
+    /** A node's position at @p u less the centre, its length and the gap
+     * to the sphere (negative inside). */
+    template <int dim, typename Node, typename Vector>
+    std::tuple<Tensor<1, dim>, double, double>
+    offset(const Node           &node,
+           const Vector         &u,
+           const Tensor<1, dim> &center,
+           const double          radius)
+    {
+      Tensor<1, dim> d;
+      for (unsigned int c = 0; c < dim; ++c)
+        d[c] = node.position[c] + u(node.dofs[c]) - center[c];
+      const double distance = d.norm();
+      return {d, distance, distance - radius};
+    }
+  } // namespace
+
+
+
   template <int dim>
   RigidImpactor<dim>::RigidImpactor(const parameters::Impactor &p,
                                     MPI_Comm                    comm)
@@ -101,11 +123,7 @@ namespace amfrac
     double                 deepest = 0;
     for (const Node &node : nodes)
       {
-        Tensor<1, dim> d;
-        for (unsigned int c = 0; c < dim; ++c)
-          d[c] = node.position[c] + u(node.dofs[c]) - center[c];
-        const double distance = d.norm();
-        const double gap      = distance - radius;
+        const auto [d, distance, gap] = offset(node, u, center, radius);
         if (gap >= 0 || distance == 0)
           continue;
         const Tensor<1, dim> on_node = (-node.stiffness * gap / distance) * d;
@@ -153,11 +171,7 @@ namespace amfrac
   Tensor<2, dim>
   RigidImpactor<dim>::node_tangent(const Node &node, const Vector &u) const
   {
-    Tensor<1, dim> d;
-    for (unsigned int c = 0; c < dim; ++c)
-      d[c] = node.position[c] + u(node.dofs[c]) - center[c];
-    const double distance = d.norm();
-    const double gap      = distance - radius;
+    const auto [d, distance, gap] = offset(node, u, center, radius);
     if (gap >= 0 || distance == 0)
       return Tensor<2, dim>();
     const Tensor<1, dim> n       = d / distance;

@@ -41,7 +41,8 @@ namespace amfrac
                         "Mass of the sphere as modelled [t]: in a quarter "
                         "model with two symmetry planes through the "
                         "sphere's path, a quarter of its mass (a steel "
-                        "sphere of 5 mm radius: 4.1e-6 t).");
+                        "sphere of 5 mm radius: 4.1e-6 t). In 2D, the "
+                        "cylinder's mass per unit width [t/mm].");
       prm.declare_entry("Center",
                         "0, 0, 7",
                         Patterns::List(Patterns::Double(), 3, 3),

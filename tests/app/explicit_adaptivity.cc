@@ -76,6 +76,28 @@ namespace
 
   using amfrac_test::largest;
 
+  /** history.csv of @p scene on the uniform n x n mesh of its finest
+   * level, without adaptivity, in @p workdir-uniform. */
+  History
+  run_uniform(const std::string &scene,
+              const unsigned int n,
+              const std::string &workdir)
+  {
+    const std::string cells = std::to_string(n);
+    Simulator<3>      uniform(
+      parameters::Parameters::from_string(
+        scene + "subsection Geometry\n  set Elements along length = " + cells
+        + "\n  set Elements along width = " + cells
+        + "\n  set Refinement region =\nend\n"
+               "subsection Adaptivity\n  set Process zone elements = 0\n"
+               "  set Refine every = 0\nend\n"
+               "subsection Output\n  set Directory = "
+        + workdir + "-uniform\nend\n"),
+      MPI_COMM_WORLD);
+    uniform.run();
+    return uniform.history();
+  }
+
   const std::string q1_bar = "subsection Geometry\n"
                              "  set Elements along length = 20\n"
                              "  set Elements along width  = 1\n"
@@ -213,18 +235,7 @@ namespace
       scene + "subsection Output\n  set Directory = " + workdir + "\nend\n");
     const History &h = runs.first, &a = runs.second;
     // The uniform mesh of the finest level: 20 x 20 cells of 1.5 mm.
-    Simulator<3> uniform(
-      parameters::Parameters::from_string(
-        scene
-        + "subsection Geometry\n  set Elements along length = 20\n"
-          "  set Elements along width = 20\n"
-          "  set Refinement region =\nend\n"
-          "subsection Adaptivity\n  set Process zone elements = 0\nend\n"
-          "subsection Output\n  set Directory = "
-        + workdir + "-uniform\nend\n"),
-      MPI_COMM_WORLD);
-    uniform.run();
-    const History    &u    = uniform.history();
+    const History     u    = run_uniform(scene, 20, workdir);
     const std::size_t last = h.n_rows() - 1;
     CHECK(h.n_rows() == u.n_rows());
     const double work = h.value(last, "external_work");
@@ -285,18 +296,7 @@ namespace
       scene + "subsection Output\n  set Directory = " + workdir + "\nend\n");
     const History &h = runs.first, &a = runs.second;
     // The finest level: 40 x 40 cells of 0.75 mm.
-    Simulator<3> uniform(
-      parameters::Parameters::from_string(
-        scene
-        + "subsection Geometry\n  set Elements along length = 40\n"
-          "  set Elements along width = 40\n"
-          "  set Refinement region =\nend\n"
-          "subsection Adaptivity\n  set Refine every = 0\nend\n"
-          "subsection Output\n  set Directory = "
-        + workdir + "-uniform\nend\n"),
-      MPI_COMM_WORLD);
-    uniform.run();
-    const History    &u    = uniform.history();
+    const History     u    = run_uniform(scene, 40, workdir);
     const std::size_t last = h.n_rows() - 1;
     const double      mass = 1.0275e-6, speed = 1e4;
     const double      energy = 0.5 * mass * speed * speed;
