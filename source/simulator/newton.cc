@@ -820,6 +820,10 @@ namespace amfrac
     work += 0.5 * (load_sum * delta);
     n.external_work += work;
 
+    // The sphere's driver adds its work to the external work.
+    std::vector<std::pair<std::string, double>> sphere_columns;
+    const double                                contact_energy
+      = impactor ? add_static_impactor_columns(sphere_columns) : 0.;
     const double strain_energy = bulk_strain_energy(solution);
 
     std::vector<std::pair<std::string, double>> columns
@@ -834,8 +838,7 @@ namespace amfrac
                              plasticity->max_kappa());
       }
     const double interface_work = add_interface_columns(columns);
-    const double contact_energy
-      = impactor ? add_static_impactor_columns(columns) : 0.;
+    columns.insert(columns.end(), sphere_columns.begin(), sphere_columns.end());
     // Only scenes whose mesh changes during the history have the term.
     if (parameters.adaptivity.during_history())
       columns.emplace_back("remeshing_energy", n.remeshing_energy);
@@ -876,20 +879,15 @@ namespace amfrac
     std::vector<std::pair<std::string, double>> &columns)
   {
     NewtonState &n = *newton;
-    // The external work column is already in the row: the sphere's driver
-    // adds to it here. What drives the sphere holds it in balance with the
+    // What drives the sphere holds it in balance with the
     // laminate's push back, so it does the work F . dc by the trapezoidal
     // rule.
     impactor->evaluate(solution, n.contact_force);
     const Tensor<1, dim> force = impactor->force_on_laminate();
-    const double         work  = 0.5 * (n.sphere_force + force)
-                        * (impactor->position() - n.sphere_center);
-    n.external_work += work;
+    n.external_work += 0.5 * (n.sphere_force + force)
+                       * (impactor->position() - n.sphere_center);
     n.sphere_force  = force;
     n.sphere_center = impactor->position();
-    for (auto &[name, value] : columns)
-      if (name == "external_work")
-        value = n.external_work;
     columns.emplace_back("impactor_position", impactor->normal_position());
     columns.emplace_back("contact_force", impactor->normal_force());
     columns.emplace_back("contact_energy", impactor->contact_energy());
