@@ -73,9 +73,9 @@ namespace amfrac
     // The old history by node key, for the nodes of the new surface.
     struct Carried
     {
-      History    history;
-      Point<dim> previous;
-      bool       fresh;
+      History        history;
+      Tensor<1, dim> previous;
+      bool           fresh;
     };
     std::map<std::pair<unsigned int, unsigned int>, Carried> old;
     for (std::size_t i = 0; i < nodes.size(); ++i)
@@ -220,7 +220,7 @@ namespace amfrac
     margin           = faces.empty() ? 0. : 0.2 * thinnest;
     candidates_built = false;
     history.assign(nodes.size(), History());
-    previous.assign(nodes.size(), Point<dim>());
+    previous.assign(nodes.size(), Tensor<1, dim>());
     positions.assign(nodes.size(), Point<dim>());
     fresh.assign(nodes.size(), true);
     for (std::size_t i = 0; i < nodes.size(); ++i)
@@ -314,15 +314,15 @@ namespace amfrac
 
   template <int dim>
   void
-  BodyContact<dim>::gather_positions(const Vector &u)
+  BodyContact<dim>::gather(const Vector &u, std::vector<Tensor<1, dim>> &values)
   {
-    const double *values = u.begin();
+    values.resize(nodes.size());
+    const double *owned_values = u.begin();
     if (gather_sizes.empty())
       {
         for (std::size_t k = 0; k < owned_nodes.size(); ++k)
           for (unsigned int d = 0; d < dim; ++d)
-            positions[owned_nodes[k]][d]
-              = nodes[owned_nodes[k]].reference[d] + values[owned_local[k][d]];
+            values[owned_nodes[k]][d] = owned_values[owned_local[k][d]];
         return;
       }
     // Buffers kept from step to step.
@@ -330,7 +330,7 @@ namespace amfrac
     mine.clear();
     for (const auto &local : owned_local)
       for (unsigned int d = 0; d < dim; ++d)
-        mine.push_back(values[local[d]]);
+        mine.push_back(owned_values[local[d]]);
     all.resize(dim * nodes.size());
     MPI_Allgatherv(mine.data(),
                    mine.size(),
@@ -341,11 +341,54 @@ namespace amfrac
                    MPI_DOUBLE,
                    comm);
     for (std::size_t k = 0; k < gathered_nodes.size(); ++k)
-      {
-        const unsigned int i = gathered_nodes[k];
-        for (unsigned int d = 0; d < dim; ++d)
-          positions[i][d] = nodes[i].reference[d] + all[dim * k + d];
-      }
+      for (unsigned int d = 0; d < dim; ++d)
+        values[gathered_nodes[k]][d] = all[dim * k + d];
+  }
+
+
+
+  template <int dim>
+  void
+  BodyContact<dim>::gather_positions(const Vector &u)
+  {
+    gather(u, displacements);
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+      positions[i] = nodes[i].reference + displacements[i];
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  BodyContact<dim>::offset(const unsigned int    s,
+                           const Face           &face,
+                           const Point<dim - 1> &xi) const
+  {
+    // sum_a N_a (x_s - x_a), with each difference taken apart in the
+    // reference positions and the displacements: a stiff penalty times
+    // the round-off of coordinates far from the origin would otherwise
+    // be a residual that Newton cannot reduce.
+    const auto     N = shape_values(xi);
+    Tensor<1, dim> r;
+    for (unsigned int a = 0; a < n_face_vertices; ++a)
+      r += N[a]
+           * ((nodes[s].reference - nodes[face.nodes[a]].reference)
+              + (displacements[s] - displacements[face.nodes[a]]));
+    return r;
+  }
+
+
+
+  template <int dim>
+  void
+  BodyContact<dim>::add_to_owned(double               *entries,
+                                 const unsigned int    node,
+                                 const Tensor<1, dim> &f) const
+  {
+    const int k = local_of_node[node];
+    if (k >= 0)
+      for (unsigned int d = 0; d < dim; ++d)
+        entries[owned_local[k][d]] += f[d];
   }
 
 
@@ -396,7 +439,8 @@ namespace amfrac
                             const Point<dim>                              &x,
                             Point<dim - 1>                                &xi,
                             Point<dim>  &on_face,
-                            const double inside) const
+                            const double inside,
+                            bool        *clamped) const
   {
     if constexpr (dim == 2)
       {
@@ -441,6 +485,8 @@ namespace amfrac
       {
         if (!(xi[d] > -inside && xi[d] < 1 + inside))
           return false;
+        if (clamped && (xi[d] < 0 || xi[d] > 1))
+          *clamped = true;
         xi[d] = std::clamp(xi[d], 0., 1.);
       }
     const auto N = shape_values(xi);
@@ -573,6 +619,8 @@ namespace amfrac
           }
         candidate_start.push_back(candidates.size());
       }
+    if (!coupled_start.empty())
+      outdated = outdated || !candidates_coupled();
     rebuild_seconds += seconds_since(start);
   }
 
@@ -586,7 +634,7 @@ namespace amfrac
     gather_positions(u);
     for (std::size_t i = 0; i < nodes.size(); ++i)
       if (fresh[i])
-        previous[i] = positions[i], fresh[i] = false;
+        previous[i] = displacements[i], fresh[i] = false;
 
     const Clock::time_point search_start = Clock::now();
     update_candidates();
@@ -596,7 +644,7 @@ namespace amfrac
       {
         const Point<dim> &x = positions[s];
         Pair              best{s, 0, Point<dim - 1>(), Tensor<1, dim>(), 0};
-        bool              found = false;
+        bool              found = false, best_clamped = false;
         for (unsigned int c = candidate_start[s]; c < candidate_start[s + 1];
              ++c)
           {
@@ -611,33 +659,45 @@ namespace amfrac
             // edges of two blocks of different lateral strain do) stays
             // in contact instead of dropping out and back in, which
             // would release and regain its penalty energy.
-            if (!project(v, x, xi, on_face, 0.02))
+            bool clamped = false;
+            if (!project(v, x, xi, on_face, 0.02, &clamped))
               continue;
             const Tensor<1, dim> n   = face.sign * normal(v, xi);
-            const double         gap = (x - on_face) * n;
-            if (!(gap < 0 && gap > -face.depth) || (found && -gap >= -best.gap)
+            const double         gap = offset(s, face, xi) * n;
+            // Gaps of round-off (faces brought back to where they
+            // touched) are not contact: their count would depend on the
+            // order of sums, i.e. on the partition.
+            if (!(gap < -1e-13 * face.depth && gap > -face.depth)
                 || !(nodes[s].area_penalty * n < 0))
               continue;
-            best  = Pair{s, candidates[c], xi, n, gap};
-            found = true;
+            // A face the node projects into beats one whose edge it has
+            // passed (whose gap turns with the face and whose force is not
+            // along the closest point's normal), then the least
+            // penetration wins; the first one found keeps a tie.
+            if (found
+                && ((clamped && !best_clamped)
+                    || (clamped == best_clamped && -gap >= -best.gap)))
+              continue;
+            best         = Pair{s, candidates[c], xi, n, gap};
+            best_clamped = clamped;
+            found        = true;
           }
         if (found)
           pairs.push_back(best);
       }
     search_seconds += seconds_since(search_start);
-
     // Forces, friction and energies, in the nodes' order (the same sums
     // in the same order on every rank), straight into the owned entries.
-    contact            = 0;
-    double    *entries = contact.begin();
-    const auto add     = [&](const unsigned int node, const Tensor<1, dim> &f) {
-      const int k = local_of_node[node];
-      if (k >= 0)
-        for (unsigned int d = 0; d < dim; ++d)
-          entries[owned_local[k][d]] += f[d];
-    };
+    contact         = 0;
+    double *entries = contact.begin();
     energy = normal_force = friction_force = penetration = 0;
-    for (const Pair &pair : pairs)
+    // Static runs evaluate trial states: the friction history moves from
+    // the last converged state, and commit() keeps it.
+    if (static_mode)
+      trial_history = history;
+    std::vector<History> &updated    = static_mode ? trial_history : history;
+    double                dissipated = 0;
+    for (Pair &pair : pairs)
       {
         const Node    &node = nodes[pair.slave];
         const Face    &face = faces[pair.face];
@@ -647,15 +707,20 @@ namespace amfrac
         Tensor<1, dim> f    = p * pair.n;
         energy += 0.5 * k * pair.gap * pair.gap;
         normal_force += p;
-        penetration = std::max(penetration, -pair.gap);
-        History &h  = history[pair.slave];
+        penetration     = std::max(penetration, -pair.gap);
+        const History h = history[pair.slave];
+        History       next;
         if (friction_coefficient > 0)
           {
-            // The slip increment of the node relative to the face point.
-            Tensor<1, dim> slip = positions[pair.slave] - previous[pair.slave];
+            // The slip increment of the node relative to the face point,
+            // from the displacements (a stiff stick spring times the
+            // round-off of positions would be a residual floor).
+            Tensor<1, dim> slip
+              = displacements[pair.slave] - previous[pair.slave];
             for (unsigned int a = 0; a < n_face_vertices; ++a)
               slip
-                -= N[a] * (positions[face.nodes[a]] - previous[face.nodes[a]]);
+                -= N[a]
+                   * (displacements[face.nodes[a]] - previous[face.nodes[a]]);
             slip -= (slip * pair.n) * pair.n;
             Tensor<1, dim> old_force;
             if (h.in_contact)
@@ -663,25 +728,33 @@ namespace amfrac
             const double   kt    = tangential_factor * k;
             Tensor<1, dim> trial = old_force - kt * slip;
             const double   limit = friction_coefficient * p;
-            if (trial.norm() > limit)
+            pair.trial           = trial;
+            pair.kt              = kt;
+            // On the cone within round-off (a node that slid, evaluated
+            // again before it moves: the first iterate of a static step)
+            // counts as sticking, so that the stick/slip decision and the
+            // tangent do not depend on the order of sums.
+            pair.slipping = trial.norm() > limit * (1 + 1e-10);
+            if (pair.slipping)
               trial *= limit / trial.norm();
             // The work of the friction force less the change of the stick
             // spring's energy from what was stored (so that what a turning
             // face or a changed stiffness takes from the spring is booked
             // too): zero while the node sticks on a fixed face.
             const double stick = trial.norm_square() / (2 * kt);
-            dissipation += -0.5 * (old_force + trial) * slip
-                           - (stick - (h.in_contact ? h.stick_energy : 0.));
+            dissipated += -0.5 * (old_force + trial) * slip
+                          - (stick - (h.in_contact ? h.stick_energy : 0.));
             energy += stick;
             friction_force += trial.norm();
-            h.friction     = trial;
-            h.stick_energy = stick;
+            next.friction     = trial;
+            next.stick_energy = stick;
             f += trial;
           }
-        h.in_contact = true;
-        add(pair.slave, f);
+        next.in_contact     = true;
+        updated[pair.slave] = next;
+        add_to_owned(entries, pair.slave, f);
         for (unsigned int a = 0; a < n_face_vertices; ++a)
-          add(face.nodes[a], -N[a] * f);
+          add_to_owned(entries, face.nodes[a], -N[a] * f);
       }
     // The nodes that left contact lose their friction history; touching
     // is all false between the calls.
@@ -690,18 +763,277 @@ namespace amfrac
     for (const unsigned int s : last_slaves)
       if (!touching[s])
         {
-          dissipation += history[s].stick_energy;
-          history[s] = History();
+          dissipated += history[s].stick_energy;
+          updated[s] = History();
         }
-    last_slaves.clear();
     for (const Pair &pair : pairs)
-      touching[pair.slave] = false, last_slaves.push_back(pair.slave);
+      touching[pair.slave] = false;
     n_contact = pairs.size();
-    // The last positions are needed for the slip increments only.
-    if (friction_coefficient > 0)
-      previous = positions;
+    if (static_mode)
+      pending_dissipation = dissipated;
+    else
+      {
+        dissipation += dissipated;
+        last_slaves.clear();
+        for (const Pair &pair : pairs)
+          last_slaves.push_back(pair.slave);
+        // The last displacements are needed for the slip increments only.
+        if (friction_coefficient > 0)
+          previous = displacements;
+      }
     ++n_evaluations;
     evaluate_seconds += seconds_since(start);
+  }
+
+
+
+  template <int dim>
+  bool
+  BodyContact<dim>::candidates_coupled() const
+  {
+    for (unsigned int s = 0; s < nodes.size(); ++s)
+      for (unsigned int c = candidate_start[s]; c < candidate_start[s + 1]; ++c)
+        if (!std::binary_search(coupled.begin() + coupled_start[s],
+                                coupled.begin() + coupled_start[s + 1],
+                                candidates[c]))
+          return false;
+    return true;
+  }
+
+
+
+  template <int dim>
+  std::vector<types::global_dof_index>
+  BodyContact<dim>::pair_dofs(const unsigned int slave,
+                              const unsigned int face) const
+  {
+    std::vector<types::global_dof_index> dofs(nodes[slave].dofs.begin(),
+                                              nodes[slave].dofs.end());
+    for (const unsigned int a : faces[face].nodes)
+      dofs.insert(dofs.end(), nodes[a].dofs.begin(), nodes[a].dofs.end());
+    return dofs;
+  }
+
+
+
+  template <int dim>
+  void
+  BodyContact<dim>::add_couplings(const Vector                      &u,
+                                  TrilinosWrappers::SparsityPattern &pattern)
+  {
+    gather_positions(u);
+    candidates_built = false;
+    update_candidates();
+    coupled_start = candidate_start;
+    coupled       = candidates;
+    for (unsigned int s = 0; s < nodes.size(); ++s)
+      std::sort(coupled.begin() + coupled_start[s],
+                coupled.begin() + coupled_start[s + 1]);
+    outdated = false;
+    // Rows of the node and of the face's nodes, where this rank owns them.
+    for (unsigned int s = 0; s < nodes.size(); ++s)
+      for (unsigned int c = candidate_start[s]; c < candidate_start[s + 1]; ++c)
+        {
+          const auto                dofs = pair_dofs(s, candidates[c]);
+          std::vector<unsigned int> members{s};
+          members.insert(members.end(),
+                         faces[candidates[c]].nodes.begin(),
+                         faces[candidates[c]].nodes.end());
+          for (const unsigned int node : members)
+            if (local_of_node[node] >= 0)
+              for (const auto row : nodes[node].dofs)
+                pattern.add_entries(row, dofs.begin(), dofs.end());
+        }
+  }
+
+
+
+  template <int dim>
+  bool
+  BodyContact<dim>::has_hanging_surface_nodes(
+    const AffineConstraints<double> &constraints) const
+  {
+    bool hanging = false;
+    for (const unsigned int i : owned_nodes)
+      for (const auto dof : nodes[i].dofs)
+        hanging = hanging
+                  || (constraints.is_constrained(dof)
+                      && !constraints.get_constraint_entries(dof)->empty());
+    return Utilities::MPI::max(hanging ? 1 : 0, comm) == 1;
+  }
+
+
+
+  template <int dim>
+  std::array<Tensor<1, dim>, BodyContact<dim>::n_face_vertices + 1>
+  BodyContact<dim>::gap_gradient(const Pair &pair) const
+  {
+    // g = (x - x(xi)) . n(xi): dg = n . (du - sum N_a du_a) + r . dn at
+    // the closest point (xi fixed: where it moves freely, r . dx/dxi
+    // = 0). r = x - x(xi) is along n inside the face, so r . dn = 0
+    // there; a node that has passed the face's edge (xi clamped) has a
+    // tangential r, and then the face's turning moves its gap.
+    const Face                             &face = faces[pair.face];
+    const auto                              N    = shape_values(pair.xi);
+    std::array<Point<dim>, n_face_vertices> v;
+    for (unsigned int a = 0; a < n_face_vertices; ++a)
+      v[a] = positions[face.nodes[a]];
+    std::array<Tensor<1, dim>, n_face_vertices + 1> gradient;
+    gradient[0] = pair.n;
+    for (unsigned int a = 0; a < n_face_vertices; ++a)
+      gradient[a + 1] = -N[a] * pair.n;
+    const Tensor<1, dim> r = offset(pair.slave, face, pair.xi);
+    // n = sign c / |c|, dn = sign (I - n n^T) dc / |c|, so r . dn =
+    // r_t . dc sign / |c| with r_t the tangential part of r.
+    const Tensor<1, dim> r_t = r - (r * pair.n) * pair.n;
+    if (r_t.norm_square() == 0)
+      return gradient;
+    if constexpr (dim == 2)
+      {
+        // c = R (v_1 - v_0), R (a, b) = (b, -a); r_t . R t = R^T r_t . t.
+        const Tensor<1, dim> t = v[1] - v[0];
+        Tensor<1, dim>       w;
+        w[0] = -r_t[1];
+        w[1] = r_t[0];
+        w *= face.sign / t.norm();
+        gradient[1] -= w;
+        gradient[2] += w;
+      }
+    else
+      {
+        // c = d0 x d1, d_i = sum_a dN_a/dxi_i v_a:
+        // r_t . dc = dd0 . (d1 x r_t) + dd1 . (r_t x d0).
+        const Point<dim - 1> &xi = pair.xi;
+        const Tensor<1, dim>  d0
+          = (v[1] - v[0]) * (1 - xi[1]) + (v[3] - v[2]) * xi[1];
+        const Tensor<1, dim> d1
+          = (v[2] - v[0]) * (1 - xi[0]) + (v[3] - v[1]) * xi[0];
+        const Tensor<1, dim>        c     = cross_product_3d(d0, d1);
+        const double                scale = face.sign / c.norm();
+        const Tensor<1, dim>        a0    = scale * cross_product_3d(d1, r_t);
+        const Tensor<1, dim>        a1    = scale * cross_product_3d(r_t, d0);
+        const std::array<double, 4> dN0{
+          {-(1 - xi[1]), 1 - xi[1], -xi[1], xi[1]}};
+        const std::array<double, 4> dN1{
+          {-(1 - xi[0]), -xi[0], 1 - xi[0], xi[0]}};
+        for (unsigned int a = 0; a < n_face_vertices; ++a)
+          gradient[a + 1] += dN0[a] * a0 + dN1[a] * a1;
+      }
+    return gradient;
+  }
+
+
+
+  template <int dim>
+  void
+  BodyContact<dim>::commit()
+  {
+    history = trial_history;
+    dissipation += pending_dissipation;
+    pending_dissipation = 0;
+    previous            = displacements;
+    collect_slaves();
+  }
+
+
+
+  template <int dim>
+  std::array<Tensor<2, dim>, BodyContact<dim>::n_face_vertices + 1>
+  BodyContact<dim>::force_gradient(const Pair &pair) const
+  {
+    // The force on the node, f = p n + f_t with p = -k g: df_n/du_J
+    // = -k n (x) dg/du_J. Sticking, f_t = f_t,old - k_t P slip with
+    // P = I - n n^T and slip = sum_J c_J (u_J - u_J,old): -k_t c_J P.
+    // Slipping, f_t = mu p t, t = trial / |trial|: the cone's radius
+    // follows p, and the direction turns with the trial force. The normal's
+    // turning is left out (as in dg, it scales with the gap).
+    const auto   N        = shape_values(pair.xi);
+    const auto   gradient = gap_gradient(pair);
+    const double k        = -(nodes[pair.slave].area_penalty * pair.n);
+    std::array<double, n_face_vertices + 1> c{{1.}};
+    for (unsigned int a = 0; a < n_face_vertices; ++a)
+      c[a + 1] = -N[a];
+    const Tensor<2, dim> P
+      = unit_symmetric_tensor<dim>() - outer_product(pair.n, pair.n);
+    std::array<Tensor<2, dim>, n_face_vertices + 1> B;
+    for (unsigned int J = 0; J < B.size(); ++J)
+      {
+        B[J] = -k * outer_product(pair.n, gradient[J]);
+        if (friction_coefficient == 0)
+          continue;
+        if (!pair.slipping)
+          B[J] -= pair.kt * c[J] * P;
+        else
+          {
+            const double         size  = pair.trial.norm();
+            const Tensor<1, dim> t     = pair.trial / size;
+            const double         limit = friction_coefficient * k * -pair.gap;
+            const Tensor<2, dim> across
+              = unit_symmetric_tensor<dim>() - outer_product(t, t);
+            B[J] += -friction_coefficient * k * outer_product(t, gradient[J])
+                    - (limit / size) * pair.kt * c[J] * (across * P);
+          }
+      }
+    return B;
+  }
+
+
+
+  template <int dim>
+  void
+  BodyContact<dim>::add_tangent(const AffineConstraints<double> &constraints,
+                                TrilinosWrappers::SparseMatrix  &tangent) const
+  {
+    constexpr unsigned int n_members = 1 + n_face_vertices;
+    std::vector<double>    row_values(dim * n_members);
+    for (const Pair &pair : pairs)
+      {
+        const auto                    dofs = pair_dofs(pair.slave, pair.face);
+        const auto                    N    = shape_values(pair.xi);
+        const auto                    B    = force_gradient(pair);
+        std::array<double, n_members> c{{1.}};
+        std::array<unsigned int, n_members> members{{pair.slave}};
+        for (unsigned int a = 0; a < n_face_vertices; ++a)
+          c[a + 1] = -N[a], members[a + 1] = faces[pair.face].nodes[a];
+        // The residual's share is -c_I f: K_IJ = -c_I df/du_J, on the rows
+        // this rank owns and that are free (a supported row keeps the
+        // bulk's diagonal only).
+        for (unsigned int I = 0; I < n_members; ++I)
+          if (local_of_node[members[I]] >= 0)
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const auto row = dofs[dim * I + d];
+                if (constraints.is_constrained(row))
+                  continue;
+                for (unsigned int J = 0; J < n_members; ++J)
+                  for (unsigned int e = 0; e < dim; ++e)
+                    row_values[dim * J + e] = -c[I] * B[J][d][e];
+                tangent.add(row, dofs.size(), dofs.data(), row_values.data());
+              }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  BodyContact<dim>::add_tangent_product(const Vector &direction,
+                                        Vector       &product)
+  {
+    gather(direction, gathered);
+    double *entries = product.begin();
+    for (const Pair &pair : pairs)
+      {
+        const Face    &face = faces[pair.face];
+        const auto     N    = shape_values(pair.xi);
+        const auto     B    = force_gradient(pair);
+        Tensor<1, dim> df   = B[0] * gathered[pair.slave];
+        for (unsigned int a = 0; a < n_face_vertices; ++a)
+          df += B[a + 1] * gathered[face.nodes[a]];
+        add_to_owned(entries, pair.slave, -df);
+        for (unsigned int a = 0; a < n_face_vertices; ++a)
+          add_to_owned(entries, face.nodes[a], N[a] * df);
+      }
   }
 
 
@@ -736,7 +1068,10 @@ namespace amfrac
   std::vector<double>
   BodyContact<dim>::state() const
   {
-    std::vector<double> values{dissipation, double(nodes.size())};
+    // Layout 2: the last displacements (layout 1, without the entry,
+    // had positions; restoring those through a difference would round the
+    // slip of the next step).
+    std::vector<double> values{dissipation, double(nodes.size()), 2.};
     for (std::size_t i = 0; i < nodes.size(); ++i)
       {
         for (unsigned int d = 0; d < dim; ++d)
@@ -756,15 +1091,17 @@ namespace amfrac
   BodyContact<dim>::set_state(const std::vector<double> &values)
   {
     constexpr unsigned int stride = 2 * dim + 2;
-    AssertThrow(values.size() >= 2 && values[1] == nodes.size()
-                  && values.size() == 2 + stride * nodes.size(),
+    AssertThrow(values.size() >= 3 && values[1] == nodes.size()
+                  && values[2] == 2.
+                  && values.size() == 3 + stride * nodes.size(),
                 ExcMessage("the checkpoint's contact state does not match "
                            "the surface of this mesh ("
-                           + std::to_string(nodes.size()) + " nodes)"));
+                           + std::to_string(nodes.size())
+                           + " nodes) or was written by an older amfrac"));
     dissipation = values[0];
     for (std::size_t i = 0; i < nodes.size(); ++i)
       {
-        const double *v = values.data() + 2 + stride * i;
+        const double *v = values.data() + 3 + stride * i;
         for (unsigned int d = 0; d < dim; ++d)
           history[i].friction[d] = v[d];
         history[i].stick_energy = v[dim];

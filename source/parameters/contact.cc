@@ -13,12 +13,13 @@ namespace amfrac
         "Enable",
         "false",
         Patterns::Bool(),
-        "Contact between the laminate's bodies (explicit runs): every node "
-        "of a surface (the outer faces, both sides of cohesive interfaces "
-        "and cracks, unbonded interfaces) is kept out of every surface face "
-        "it was not paired with in the undeformed laminate, by a penalty "
-        "along the face's normal and Coulomb friction. A paired interface "
-        "or crack face keeps its own contact (the cohesive law's).");
+        "Contact between the laminate's bodies: every node of a surface "
+        "(the outer faces, both sides of cohesive interfaces and cracks, "
+        "unbonded interfaces) is kept out of every surface face it was not "
+        "paired with in the undeformed laminate, by a penalty along the "
+        "face's normal and Coulomb friction. A paired interface or crack "
+        "face keeps its own contact (the cohesive law's). Explicit and "
+        "static runs (Newton with the contact tangent).");
       prm.declare_entry(
         "Penalty",
         "5e5",

@@ -1777,10 +1777,8 @@ namespace amfrac
       if (!contact.active)
         return;
       const std::string enable = "Contact/Enable";
-      require(time.explicit_dynamics,
-              enable,
-              "contact between the bodies is evaluated in explicit runs "
-              "only: it needs Time/Time integration = explicit");
+      if (!time.explicit_dynamics)
+        check_static_contact_input();
       require(!adaptivity.during_history(),
               enable,
               "the contact surfaces and their friction history are those "
@@ -1804,6 +1802,27 @@ namespace amfrac
                 "interface " + std::to_string(k)
                   + " is also in Cohesive interfaces/Interfaces: an "
                     "interface is either bonded or not");
+    }
+
+
+
+    void
+    Parameters::check_static_contact_input() const
+    {
+      // What the static path does not evaluate with contact yet.
+      require(!nonlinear_solver.arc_length
+                && !nonlinear_solver.dissipation_control,
+              "Nonlinear solver/Control",
+              "path following has not been tested with contact between "
+              "the bodies; use Control = displacement with Contact/Enable");
+      require(!buckling.active() && geometry.imperfection_mode == 0,
+              "Buckling/Number of modes",
+              "a linear buckling analysis does not include the contact "
+              "between the bodies; set it to 0 with Contact/Enable");
+      require(!adaptivity.active(),
+              "Adaptivity/Refinement cycles",
+              "the contact surfaces are those of the initial mesh in a "
+              "static run; set Refinement cycles = 0 with Contact/Enable");
     }
 
 

@@ -570,6 +570,9 @@ namespace amfrac
         // Cell by cell in the order of the part's cells.
         part.put("plasticity.states", plasticity->owned_values());
       }
+    // The friction history of contact between the bodies.
+    if (body_contact)
+      run.put("newton.body_contact", body_contact->state());
     if (parameters.nonlinear_solver.arc_length)
       {
         run.put("newton.arc_scale", newton->arc_scale);
@@ -640,6 +643,14 @@ namespace amfrac
         {
           newton->plastic_work = run.get_scalar("newton.plastic_work");
           restore_plastic_history();
+        }
+      if (body_contact)
+        {
+          if (!run.has("newton.body_contact"))
+            throw InputError("Contact/Enable",
+                             "the checkpoint has no contact state: it was "
+                             "written by a run without contact");
+          body_contact->set_state(run.get("newton.body_contact"));
         }
       if (parameters.nonlinear_solver.arc_length)
         {

@@ -85,29 +85,16 @@ namespace amfrac
     newton->remeshing_energy            = remeshing_energy;
     newton->plastic_work                = plastic_work;
     make_constraints(0., newton->increment_constraints, true);
-
     const IndexSet &owned    = dof_layer.locally_owned_dofs();
     const IndexSet &relevant = dof_layer.locally_relevant_dofs();
-    TrilinosWrappers::SparsityPattern pattern(owned, owned, relevant, comm);
-    assembler.add_couplings(newton->increment_constraints, pattern);
-    if (interfaces)
-      interfaces->add_couplings(newton->increment_constraints, pattern);
-    pattern.compress();
-    if (newton_solver)
-      newton_solver->release();
-    solver_ready = false;
-    system_matrix.reinit(pattern);
+    if (parameters.contact.active)
+      setup_static_contact();
+    build_newton_matrix(Vector(owned, comm));
     AffineConstraints<double> none;
     none.close();
     assembler.reinit_matrix(none, newton->bulk_unconstrained);
-    // A total Lagrangian bulk is assembled per iteration (update_residual).
     if (!finite_strain)
-      {
-        newton->bulk_condensed.reinit(pattern);
-        assembler.assemble_matrix(newton->increment_constraints,
-                                  newton->bulk_condensed);
-        assembler.assemble_matrix(none, newton->bulk_unconstrained);
-      }
+      assembler.assemble_matrix(none, newton->bulk_unconstrained);
 
     for (Vector *v : {&solution,
                       &newton->converged_solution,
@@ -124,6 +111,8 @@ namespace amfrac
                       &newton->load_unit,
                       &newton->arc_previous})
       v->reinit(owned, comm);
+    if (body_contact)
+      newton->body_contact_force.reinit(owned, comm);
     if (parameters.impactor.active && !parameters.time.explicit_dynamics)
       {
         newton->contact_force.reinit(owned, comm);
@@ -140,12 +129,77 @@ namespace amfrac
 
 
   template <int dim>
+  void
+  Simulator<dim>::setup_static_contact()
+  {
+    if (!body_contact)
+      body_contact
+        = std::make_unique<BodyContact<dim>>(parameters.contact, comm);
+    body_contact->set_static();
+    body_contact->setup(dof_layer, released_faces(), paired_faces());
+    // A hanging node's rows belong to its parents, which the contact
+    // tangent does not distribute to.
+    if (body_contact->has_hanging_surface_nodes(newton->increment_constraints))
+      throw InputError("Contact/Enable",
+                       "static contact needs contact surfaces without "
+                       "hanging nodes; refine the laminate uniformly "
+                       "(Geometry/Refinement region, Region refinements "
+                       "make hanging nodes)");
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::build_newton_matrix(const Vector &u)
+  {
+    // The matrix's pattern: the bulk, the interfaces and the pairs of
+    // nodes and faces that may come into contact (as found at @p u).
+    const IndexSet &owned    = dof_layer.locally_owned_dofs();
+    const IndexSet &relevant = dof_layer.locally_relevant_dofs();
+    TrilinosWrappers::SparsityPattern pattern(owned, owned, relevant, comm);
+    assembler.add_couplings(newton->increment_constraints, pattern);
+    if (interfaces)
+      interfaces->add_couplings(newton->increment_constraints, pattern);
+    if (body_contact)
+      body_contact->add_couplings(u, pattern);
+    pattern.compress();
+    // The solver refers to the matrix: it goes first.
+    if (newton_solver)
+      newton_solver->release();
+    solver_ready = false;
+    system_matrix.reinit(pattern);
+    // A total Lagrangian bulk is assembled per iteration (update_residual).
+    if (!finite_strain)
+      {
+        newton->bulk_condensed.reinit(pattern);
+        assembler.assemble_matrix(newton->increment_constraints,
+                                  newton->bulk_condensed);
+      }
+  }
+
+
+
+  template <int dim>
   double
   Simulator<dim>::update_residual(const Vector                   &trial,
                                   TrilinosWrappers::SparseMatrix *tangent)
   {
     NewtonState &n    = *newton;
     relevant_solution = trial;
+    if (body_contact)
+      {
+        {
+          TimerOutput::Scope scope(timer, "body contact");
+          body_contact->evaluate(trial, n.body_contact_force);
+        }
+        // A node met a face the matrix does not couple it to.
+        if (tangent && body_contact->couplings_outdated())
+          {
+            TimerOutput::Scope scope(timer, "setup Newton");
+            build_newton_matrix(trial);
+          }
+      }
     if (finite_strain)
       {
         // F_int(u) into the residual and, with a tangent, K_T condensed
@@ -183,6 +237,17 @@ namespace amfrac
         if (tangent)
           {
             impactor->add_tangent(trial, n.increment_constraints, *tangent);
+            tangent->compress(VectorOperation::add);
+          }
+      }
+    if (body_contact)
+      {
+        // Contact forces push the bodies apart, as the sphere's do.
+        n.residual -= n.body_contact_force;
+        if (tangent)
+          {
+            TimerOutput::Scope scope(timer, "body contact");
+            body_contact->add_tangent(n.increment_constraints, *tangent);
             tangent->compress(VectorOperation::add);
           }
       }
@@ -289,6 +354,8 @@ namespace amfrac
     n.bulk_unconstrained.vmult(product, direction);
     if (impactor)
       impactor->add_tangent_product(relevant_solution, direction, product);
+    if (body_contact)
+      body_contact->add_tangent_product(direction, product);
     if (!interfaces && !plasticity)
       return;
     Vector relevant_direction(dof_layer.locally_owned_dofs(),
@@ -376,14 +443,16 @@ namespace amfrac
     // A total Lagrangian bulk changes with every iteration.
     // Plastic plies: likewise if no point was plastic in this tangent nor
     // in the factorized one.
+    // Contact: likewise if no node touches now nor did then.
     const bool unchanged
-      = !finite_strain && (interfaces || plasticity)
-        && Utilities::MPI::min((!interfaces || interfaces->tangent_unchanged())
-                                   && (!plasticity
-                                       || plasticity->tangent_unchanged()) ?
-                                 1 :
-                                 0,
-                               comm)
+      = !finite_strain && (interfaces || plasticity || body_contact)
+        && Utilities::MPI::min(
+             (!interfaces || interfaces->tangent_unchanged())
+                 && (!plasticity || plasticity->tangent_unchanged())
+                 && (!body_contact || body_contact->tangent_unchanged()) ?
+               1 :
+               0,
+             comm)
              == 1;
     if (!solver_ready)
       solver.initialize(system_matrix,
@@ -398,6 +467,8 @@ namespace amfrac
       interfaces->mark_factorized();
     if ((!solver_ready || !unchanged) && plasticity)
       plasticity->mark_factorized();
+    if ((!solver_ready || !unchanged) && body_contact)
+      body_contact->mark_factorized();
     solver_ready = true;
     solver.solve(x, b);
   }
@@ -754,8 +825,14 @@ namespace amfrac
         n.increment_constraints.distribute(n.increment);
 
         // Backtracking line search on the residual norm; the best point
-        // seen is kept if none satisfies the decrease condition.
-        const Vector start = solution;
+        // seen is kept if none satisfies the decrease condition. Contact
+        // between the bodies takes the full step when it is finite: its
+        // penalty times the second-order change of the gaps (slip times
+        // rotation) makes the residual norm a poor merit function, under
+        // which Newton creeps (measured on prm/contact_stack_2d.prm: 3 and
+        // 4 iterations with full steps, a failed step without).
+        const bool   full_steps = static_cast<bool>(body_contact);
+        const Vector start      = solution;
         double       alpha = 1, best_alpha = 1, best_norm = 0;
         for (unsigned int trial = 0;; ++trial)
           {
@@ -767,8 +844,8 @@ namespace amfrac
             if (trial == 0 || trial_norm < best_norm
                 || (!std::isfinite(best_norm) && std::isfinite(trial_norm)))
               best_norm = trial_norm, best_alpha = alpha;
-            if (!p.line_search || trial_norm < (1 - 1e-4 * alpha) * norm
-                || trial == 5)
+            if (!p.line_search || (full_steps && std::isfinite(trial_norm))
+                || trial_norm < (1 - 1e-4 * alpha) * norm || trial == 5)
               break;
             alpha *= 0.5;
           }
@@ -780,8 +857,14 @@ namespace amfrac
           }
         norm = best_norm;
         report.residuals.push_back(norm);
+        // Contact between the bodies: a node sliding along a face that
+        // turns changes its gap at second order (slip times rotation),
+        // which the penalty makes large against the loads; Newton then
+        // creeps under the line search before it converges, and the
+        // iteration limit alone ends it.
         if (!std::isfinite(norm)
-            || stagnates(report.residuals, interfaces.get(), comm))
+            || (!body_contact
+                && stagnates(report.residuals, interfaces.get(), comm)))
           return report;
       }
     report.converged = converged();
@@ -822,8 +905,10 @@ namespace amfrac
 
     // The sphere's driver adds its work to the external work.
     std::vector<std::pair<std::string, double>> sphere_columns;
-    const double                                contact_energy
+    double                                      contact_energy
       = impactor ? add_static_impactor_columns(sphere_columns) : 0.;
+    if (body_contact)
+      contact_energy += add_static_contact_columns(sphere_columns);
     const double strain_energy = bulk_strain_energy(solution);
 
     std::vector<std::pair<std::string, double>> columns
@@ -894,6 +979,26 @@ namespace amfrac
     columns.emplace_back("contact_nodes", impactor->contact_nodes());
     columns.emplace_back("penetration", impactor->penetration_depth());
     return impactor->contact_energy();
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::add_static_contact_columns(
+    std::vector<std::pair<std::string, double>> &columns)
+  {
+    // At the converged state (the last evaluation may be a line search's),
+    // whose friction history the next step starts from.
+    body_contact->evaluate(solution, newton->body_contact_force);
+    body_contact->commit();
+    columns.emplace_back("body_contact_energy", body_contact->contact_energy());
+    columns.emplace_back("friction_dissipation",
+                         body_contact->friction_dissipation());
+    const auto more = body_contact->columns();
+    columns.insert(columns.end(), more.begin(), more.end());
+    return body_contact->contact_energy()
+           + body_contact->friction_dissipation();
   }
 
 

@@ -455,8 +455,9 @@ namespace amfrac
                        "on at least one face");
     // Refinement cycles repeat the whole run per mesh: they neither
     // checkpoint nor resume (the parameters refuse Every n steps there).
-    const bool nonlinear
-      = interfaces || finite_strain || plasticity || parameters.impactor.active;
+    const bool nonlinear = interfaces || finite_strain || plasticity
+                           || parameters.impactor.active
+                           || parameters.contact.active;
     const bool resumable = parameters.time.explicit_dynamics || nonlinear
                            || !parameters.adaptivity.active();
     if (restart && !resumable)

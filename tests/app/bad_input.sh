@@ -485,8 +485,33 @@ end"
 contact='subsection Contact
   set Enable = true
 end'
-expect contact_static "Contact/Enable" "$base
+static_contact="$base
+subsection Boundary conditions
+  subsection z-
+    set Type = displacement
+  end
+end
 $contact"
+expect contact_static_arc_length "Nonlinear solver/Control" "$static_contact
+subsection Cohesive interfaces
+  set Interfaces = 1
+end
+subsection Nonlinear solver
+  set Control = arc-length
+end"
+expect contact_static_buckling "Buckling/Number of modes" "$static_contact
+subsection Buckling
+  set Number of modes = 2
+end"
+expect contact_static_cycles "Adaptivity/Refinement cycles" "$static_contact
+subsection Adaptivity
+  set Refinement cycles = 2
+end"
+expect contact_static_hanging "hanging nodes" "$static_contact
+subsection Geometry
+  set Refinement region = x < 5
+  set Region refinements = 1
+end"
 expect contact_unbonded_disabled "Contact/Unbonded interfaces" "$base
 $explicit
 subsection Contact

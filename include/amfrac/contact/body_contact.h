@@ -6,6 +6,9 @@
 #include <cstdint>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <string>
 #include <utility>
@@ -15,8 +18,8 @@ namespace amfrac
 {
   /**
    * Contact between the laminate's own bodies (issue 10): penalty
-   * node-to-face contact with Coulomb friction, for explicit runs, with Q1
-   * elements.
+   * node-to-face contact with Coulomb friction, for explicit runs and on
+   * the static Newton path (with its tangent), with Q1 elements.
    *
    * The surface is every outer face and both sides of every released face
    * (cohesive interfaces, cracks, unbonded interfaces). Each surface node
@@ -58,6 +61,18 @@ namespace amfrac
    * whose node leaves contact (or is split by a crack) releases its energy
    * into the dissipation.
    *
+   * Static runs: evaluate() takes the friction history from the last
+   * converged state (commit()). The tangent of a pair is -c_I df/du_J with
+   * c = (1, -N_1, ..., -N_m) over the node and its face's nodes: the
+   * normal part -k n (x) dg/du (dg from the closest point, with the
+   * turning of a face whose edge the node has passed), the stick spring
+   * -k_t c_J (I - n n^T) or the slip's return (the cone's radius follows
+   * the normal force, the direction the trial force); the turning of the
+   * normal times the gap is left out. Its matrix entries couple each node to
+   * the nodes of its candidate faces; when a later search finds a
+   * candidate outside them, couplings_outdated() says so and the
+   * simulator builds the pattern again.
+   *
    * MPI: every rank gathers the displacements of all surface nodes (one
    * Allgatherv of the owned ones) and evaluates the whole surface in an
    * order independent of the partition (nodes sorted by their undeformed
@@ -90,6 +105,60 @@ namespace amfrac
      * the update of the friction history from the last call. Collective. */
     void
     evaluate(const Vector &u, Vector &contact);
+
+    /** Static runs: the entries coupling every surface node to the nodes
+     * of its candidate faces at the displacement @p u, into the rows of
+     * @p pattern this rank owns; they are remembered for
+     * couplings_outdated(). Collective. */
+    void
+    add_couplings(const Vector &u, TrilinosWrappers::SparsityPattern &pattern);
+
+    /** A search since add_couplings() found a candidate face of a node
+     * whose entries are not in the pattern. */
+    bool
+    couplings_outdated() const
+    {
+      return outdated;
+    }
+
+    /** Whether a surface node this rank owns is a hanging node of
+     * @p constraints (static contact needs none). Collective. */
+    bool
+    has_hanging_surface_nodes(
+      const AffineConstraints<double> &constraints) const;
+
+    /** The tangent of the pairs of the last evaluate() into the owned rows
+     * of @p tangent that @p constraints leaves free (static runs). */
+    void
+    add_tangent(const AffineConstraints<double> &constraints,
+                TrilinosWrappers::SparseMatrix  &tangent) const;
+
+    /** @p product += that tangent times @p direction (owned entries).
+     * Collective. */
+    void
+    add_tangent_product(const Vector &direction, Vector &product);
+
+    /** Static runs: evaluate() computes trial states from the last
+     * converged one, which commit() replaces by the last evaluation's. */
+    void
+    set_static()
+    {
+      static_mode = true;
+    }
+    void
+    commit();
+
+    /** No pair now and none when the tangent was last factorized. */
+    bool
+    tangent_unchanged() const
+    {
+      return pairs.empty() && !pairs_factorized;
+    }
+    void
+    mark_factorized()
+    {
+      pairs_factorized = !pairs.empty();
+    }
 
     /** Penalty energy of the normal and stick springs at the last
      * evaluate(). */
@@ -184,13 +253,15 @@ namespace amfrac
 
     /** Closest point of @p x on the face with vertex positions
      * @p vertices: whether it lies within @p inside (in face coordinates)
-     * of the face, its coordinates (clamped to the face) and the point. */
+     * of the face, its coordinates (clamped to the face) and the point;
+     * @p clamped (if given) is set when the coordinates were clamped. */
     bool
     project(const std::array<Point<dim>, n_face_vertices> &vertices,
             const Point<dim>                              &x,
             Point<dim - 1>                                &xi,
             Point<dim>                                    &on_face,
-            const double                                   inside) const;
+            const double                                   inside,
+            bool *clamped = nullptr) const;
     /** The unit normal of the face (before its sign) at @p xi. */
     Tensor<1, dim>
     normal(const std::array<Point<dim>, n_face_vertices> &vertices,
@@ -202,6 +273,27 @@ namespace amfrac
     coincident(const unsigned int s, const Face &face) const;
     void
     gather_positions(const Vector &u);
+    /** The owned entries of @p u at every surface node, gathered. */
+    void
+    gather(const Vector &u, std::vector<Tensor<1, dim>> &values);
+    /** Every candidate of the last search is in the matrix. */
+    bool
+    candidates_coupled() const;
+    /** x_s - x(xi): node @p s from the point @p xi of @p face, from the
+     * reference positions and the displacements separately. */
+    Tensor<1, dim>
+    offset(const unsigned int    s,
+           const Face           &face,
+           const Point<dim - 1> &xi) const;
+    /** The dofs of a node and a face: the node's, then its face nodes'. */
+    std::vector<types::global_dof_index>
+    pair_dofs(const unsigned int slave, const unsigned int face) const;
+    /** @p f into the owned entries @p entries of node @p node's dofs (if
+     * this rank owns it). */
+    void
+    add_to_owned(double               *entries,
+                 const unsigned int    node,
+                 const Tensor<1, dim> &f) const;
     /** The local coordinates of a face's centre. */
     static Point<dim - 1>
     face_middle();
@@ -219,8 +311,11 @@ namespace amfrac
     std::vector<Node>    nodes;
     std::vector<Face>    faces;
     std::vector<History> history;
-    /** Current and last evaluation's positions of all nodes. */
-    std::vector<Point<dim>> positions, previous;
+    /** Current positions and displacements of all nodes, and the
+     * displacements the slip increments start from (the last evaluation's
+     * in explicit runs, the last converged state's in static ones). */
+    std::vector<Point<dim>>     positions;
+    std::vector<Tensor<1, dim>> displacements, previous;
     /** Nodes without a last position yet (new, or split by a crack). */
     std::vector<bool> fresh;
     /** The nodes this rank sends, and the gathered order of all ranks. */
@@ -238,7 +333,20 @@ namespace amfrac
       Point<dim - 1> xi;
       Tensor<1, dim> n;
       double         gap;
+      /** Friction: the trial force before the return, the stick
+       * stiffness, and whether the node slips. */
+      Tensor<1, dim> trial;
+      double         kt       = 0;
+      bool           slipping = false;
     };
+    /** d g / d u of a pair at the last evaluation: for the node, then
+     * for its face's nodes. */
+    std::array<Tensor<1, dim>, n_face_vertices + 1>
+    gap_gradient(const Pair &pair) const;
+    /** d f / d u of the force f on a pair's node, for the node, then for
+     * its face's nodes. */
+    std::array<Tensor<2, dim>, n_face_vertices + 1>
+    force_gradient(const Pair &pair) const;
     /** Scratch of evaluate(), kept to reuse its memory: the faces' boxes,
      * the grid (cell key, face) sorted, the pairs found. */
     std::vector<std::pair<Point<dim>, Point<dim>>>      boxes;
@@ -256,6 +364,17 @@ namespace amfrac
     std::vector<Point<dim>>   built_positions;
     double                    margin           = 0;
     bool                      candidates_built = false;
+    /** Static runs: the candidates whose entries are in the matrix (CSR,
+     * each node's faces sorted), and whether a search found others. */
+    std::vector<unsigned int> coupled_start, coupled;
+    bool                      outdated = false, pairs_factorized = false;
+    /** Static runs: the friction history and dissipation of the last
+     * evaluation, kept by commit(). */
+    bool                 static_mode = false;
+    std::vector<History> trial_history;
+    double               pending_dissipation = 0;
+    /** Scratch of add_tangent_product(). */
+    std::vector<Tensor<1, dim>> gathered;
 
     double energy = 0, dissipation = 0, normal_force = 0, friction_force = 0,
            penetration     = 0;

@@ -503,6 +503,9 @@ namespace amfrac
       /** Inputs contact between the bodies cannot take (InputError). */
       void
       check_contact_input() const;
+      /** Contact between the bodies in a static run. */
+      void
+      check_static_contact_input() const;
       /** Inputs a linear buckling analysis cannot take (InputError). */
       void
       check_buckling_input() const;

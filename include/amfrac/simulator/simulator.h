@@ -220,7 +220,7 @@ namespace amfrac
     /** Runs with an Impactor subsection (nullptr otherwise): a free sphere
      * in explicit runs, a prescribed one in static runs. */
     std::unique_ptr<RigidImpactor<dim>> impactor;
-    /** Explicit runs with Contact/Enable (nullptr otherwise). */
+    /** Runs with Contact/Enable (nullptr otherwise). */
     std::unique_ptr<BodyContact<dim>> body_contact;
     /** Crack insertion: where faces may crack (nullptr without crack
      * insertion), and the strength factor of every face (face f of active
@@ -320,6 +320,8 @@ namespace amfrac
        * trapezoidal work of what drives it, part of external_work). */
       Vector         contact_force;
       Tensor<1, dim> sphere_force, sphere_center;
+      /** Contact between the bodies: their forces (owned entries). */
+      Vector body_contact_force;
     };
     /** Adaptivity: the current cycle, the estimate of its last step
      * (the marking criterion), its zz estimate (reported), the last
@@ -805,6 +807,20 @@ namespace amfrac
     bulk_strain_energy(const Vector &u) const;
     void
     setup_newton();
+    /** Static contact between the bodies: the surface of the current
+     * mesh (hanging nodes on it are an input error). */
+    void
+    setup_static_contact();
+    /** The Newton matrix's pattern (the contact pairs found at @p u) and
+     * the condensed bulk; the solver starts afresh. */
+    void
+    build_newton_matrix(const Vector &u);
+    /** The columns of contact between the bodies at the converged state,
+     * whose friction history is kept; returns their penalty energy and
+     * friction dissipation. */
+    double
+    add_static_contact_columns(
+      std::vector<std::pair<std::string, double>> &columns);
     /** A prescribed sphere at time @p t and the converged state: its force
      * and centre, from which the next step's work is counted. At t = 0 it
      * must not touch the laminate. */

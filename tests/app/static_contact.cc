@@ -1,0 +1,327 @@
+// Contact between the laminate's bodies on the static Newton path (issue
+// 10) against known answers:
+// - blocks: prm/contact_blocks_static.prm: two blocks pressed together by
+//   d and pulled apart again. Pressed, the blocks and the contact are
+//   springs in series, p = d / (2 H / E + 1 / Penalty): the contact force
+//   and the support's reaction are p A (1e-6), the faces penetrate by
+//   p / Penalty (1e-6), all 9 + 9 face nodes touch, the contact energy is
+//   F^2 / (2 Penalty A) (1e-6), at most 2 Newton iterations per step (the
+//   tangent; without it the penalty makes Newton creep); back at the start
+//   (gaps of round-off) and pulled apart, no node touches and nothing is
+//   stored; the balance closes to 1e-9 of the work;
+// - blocks_2d: the same in plane strain (forces per unit width, 3 + 3
+//   nodes);
+// - shifted: the upper block also slides by 0.6 of a cell along x while
+//   pressed (nodes cross face edges, the search finds new faces and the
+//   matrix's couplings are built again): the contact force equals the
+//   support's reaction (1e-8); frictionless contact transmits shear only
+//   through faces that tilt by the strain (measured 9.5e-5 of the force,
+//   check 1e-3); the balance is 2.7e-3 of the work (check 5e-3; 7e-4 with
+//   24 steps instead of 6: the trapezoidal rule on a reaction that grows
+//   as nodes pass edges, and a penalty that follows the normal without
+//   its derivative);
+// - friction: pressed as in blocks (t = 1), then the upper face moves
+//   along x by 2e-3 per unit t to t = 3 with mu = 0.3: once the blocks
+//   slide, the friction force is mu times the normal force (1e-6; measured
+//   2e-16) and the support's shear reaction (1e-3; measured 2.1e-4: the
+//   normals tilt by the strain and carry some of it), and friction
+//   dissipates mu N times the slip of each step (1e-5; measured 2.6e-6:
+//   while sliding, the whole increment is slip); the balance is within the
+//   trapezoidal rule's error on the step in which the blocks start to
+//   slide, mu N s / 2 (measured 2.4e-7 of 5.9e-3); at most 6 Newton
+//   iterations per step (measured 1 to 6, median 4);
+// - stick: 1e-5 per unit t: the friction force stays below mu N and is
+//   the support's reaction (1e-3), nothing is dissipated (1e-12 of the
+//   work), balance 1e-8 of the work (measured 1.9e-9);
+// - stack: prm/contact_stack_2d.prm: two unbonded plies as a cantilever
+//   under a pressure q: they deflect together (tips within 1e-3) as much
+//   as a single ply of the same mesh under q / 2 (1e-3), more than 3.5 times
+//   the bonded pair (beam theory: 4, less with shear and the Q1 mesh),
+//   the contact carries q L / 2 less what the clamp takes at the root
+//   (within 5 %), at most 4 Newton iterations per step, balance 1e-4.
+// usage: app_static_contact blocks|blocks_2d|shifted|friction|stick|stack
+//        SCENE.prm WORKDIR
+#include "../check.h"
+#include "scene.h"
+
+#include <amfrac/simulator/simulator.h>
+#include <cmath>
+#include <deal.II/base/mpi.h>
+#include <sstream>
+
+using namespace amfrac;
+
+#define CHECK_RELATIVE(value, expected, tol) \
+  CHECK_CLOSE((value), (expected), (tol)*std::abs(expected))
+
+namespace
+{
+  using amfrac_test::largest;
+
+  const double modulus = 70000, penalty = 5e5, ply = 1, d = 3e-4;
+
+  std::string
+  output_to(const std::string &workdir)
+  {
+    return "subsection Output\n  set Directory = " + workdir + "\nend\n";
+  }
+
+  double
+  relative_balance(const History &h)
+  {
+    double work = 0;
+    for (std::size_t r = 0; r < h.n_rows(); ++r)
+      work = std::max(work, std::abs(h.value(r, "external_work")));
+    return largest(h, "balance_error") / work;
+  }
+
+  /** Pressed (row 1, t = 1) and apart (rows 3 and 4); @p width: the
+   * contact face's extent normal to the section (1 in 2D). */
+  void
+  check_pressed(const History     &h,
+                const double       area,
+                const unsigned int nodes,
+                const std::string &reaction)
+  {
+    const double p     = d / (2 * ply / modulus + 1 / penalty);
+    const double force = p * area;
+    std::cout << "pressed: force " << h.value(1, "body_contact_normal_force")
+              << " of " << force << ", reaction " << h.value(1, reaction)
+              << ", penetration " << h.value(1, "body_contact_penetration")
+              << " of " << p / penalty << ", nodes "
+              << h.value(1, "body_contact_nodes") << ", energy "
+              << h.value(1, "body_contact_energy") << " of "
+              << force * force / (2 * penalty * area) << ", balance "
+              << relative_balance(h) << ", Newton iterations "
+              << largest(h, "newton_iterations") << std::endl;
+    CHECK_RELATIVE(h.value(1, "body_contact_normal_force"), force, 1e-6);
+    CHECK_RELATIVE(h.value(1, reaction), force, 1e-6);
+    CHECK_RELATIVE(h.value(1, "body_contact_penetration"), p / penalty, 1e-6);
+    CHECK(h.value(1, "body_contact_nodes") == nodes);
+    CHECK_RELATIVE(h.value(1, "body_contact_energy"),
+                   force * force / (2 * penalty * area),
+                   1e-6);
+    CHECK(largest(h, "newton_iterations") <= 2);
+    for (const std::size_t r : {3, 4})
+      {
+        CHECK(h.value(r, "body_contact_nodes") == 0);
+        CHECK(h.value(r, "body_contact_energy") == 0);
+      }
+    CHECK(relative_balance(h) < 1e-9);
+  }
+
+  void
+  blocks(const std::string &scene, const std::string &workdir)
+  {
+    const auto simulator = amfrac_test::run_scene<3>(scene, output_to(workdir));
+    check_pressed(simulator->history(), 4, 18, "reaction_z-_z");
+  }
+
+  void
+  blocks_2d(const std::string &scene, const std::string &workdir)
+  {
+    const std::string text
+      = "set Dimension = 2\n"
+        "subsection Boundary conditions\n"
+        "  subsection z-\n    set Type = free\n  end\n"
+        "  subsection z+\n    set Type = free\n  end\n"
+        "  subsection y-\n    set Type = displacement\n  end\n"
+        "  subsection y+\n    set Type = displacement\n"
+        "    set Displacement = 0; -d*(1 - abs(t - 1))\n  end\n"
+        "end\n";
+    const auto simulator
+      = amfrac_test::run_scene<2>(scene, text + output_to(workdir));
+    check_pressed(simulator->history(), 2, 6, "reaction_y-_y");
+  }
+
+  void
+  shifted(const std::string &scene, const std::string &workdir)
+  {
+    const std::string text
+      = "subsection Boundary conditions\n"
+        "  subsection z+\n"
+        "    set Displacement = 0.6*min(t, 1); 0; -d*(1 - abs(t - 1))\n"
+        "  end\n"
+        "end\n"
+        "subsection Time\n  set End time = 1\n  set Number of steps = 6\n"
+        "end\n";
+    const auto simulator
+      = amfrac_test::run_scene<3>(scene, text + output_to(workdir));
+    const History    &h     = simulator->history();
+    const std::size_t last  = h.n_rows() - 1;
+    const double      force = h.value(last, "body_contact_normal_force");
+    std::cout << "shifted: force " << force << ", reaction "
+              << h.value(last, "reaction_z-_z") << ", shear "
+              << h.value(last, "reaction_z-_x") << ", nodes "
+              << h.value(last, "body_contact_nodes") << ", balance "
+              << relative_balance(h) << ", Newton iterations "
+              << largest(h, "newton_iterations") << std::endl;
+    CHECK(force > 0);
+    CHECK_RELATIVE(h.value(last, "reaction_z-_z"), force, 1e-8);
+    CHECK(std::abs(h.value(last, "reaction_z-_x")) < 1e-3 * force);
+    CHECK(relative_balance(h) < 5e-3);
+  }
+
+  /** The upper face slides by @p rate per unit t after t = 1. */
+  std::string
+  sliding(const double rate, const std::string &workdir)
+  {
+    std::ostringstream text;
+    text << "subsection Boundary conditions\n  subsection z+\n"
+         << "    set Displacement = " << rate
+         << "*max(t - 1, 0); 0; -d*min(t, 1)\n  end\nend\n"
+         << "subsection Contact\n  set Friction coefficient = 0.3\nend\n"
+         << "subsection Time\n  set End time = 3\n  set Number of steps = 6\n"
+         << "end\n"
+         << output_to(workdir);
+    return text.str();
+  }
+
+  void
+  friction(const std::string &scene, const std::string &workdir)
+  {
+    const double mu = 0.3, rate = 2e-3;
+    const auto   simulator
+      = amfrac_test::run_scene<3>(scene, sliding(rate, workdir));
+    const History &h          = simulator->history();
+    double         worst_slip = 0, worst_reaction = 0, worst_dissipation = 0;
+    // Rows 3 to 5 (t = 2, 2.5, 3) slide for the whole step.
+    for (std::size_t r = 2; r < h.n_rows(); ++r)
+      {
+        const double normal   = h.value(r, "body_contact_normal_force");
+        const double friction = h.value(r, "body_contact_friction_force");
+        worst_slip
+          = std::max(worst_slip, std::abs(friction / (mu * normal) - 1));
+        worst_reaction
+          = std::max(worst_reaction,
+                     std::abs(std::abs(h.value(r, "reaction_z-_x")) / friction
+                              - 1));
+        if (r < 3)
+          continue;
+        const double slip
+          = rate * (h.value(r, "time") - h.value(r - 1, "time"));
+        const double dissipated = h.value(r, "friction_dissipation")
+                                  - h.value(r - 1, "friction_dissipation");
+        worst_dissipation
+          = std::max(worst_dissipation,
+                     std::abs(dissipated / (friction * slip) - 1));
+      }
+    const std::size_t last = h.n_rows() - 1;
+    const double      bound
+      = 0.5 * mu * h.value(1, "body_contact_normal_force") * rate * 0.5;
+    std::cout << "friction: friction / mu N - 1 " << worst_slip
+              << ", reaction / friction - 1 " << worst_reaction
+              << ", dissipation / (mu N slip) - 1 " << worst_dissipation
+              << ", dissipated " << h.value(last, "friction_dissipation")
+              << ", balance " << largest(h, "balance_error") << " of bound "
+              << bound << ", Newton iterations "
+              << largest(h, "newton_iterations") << std::endl;
+    CHECK(worst_slip < 1e-6);
+    CHECK(worst_reaction < 1e-3);
+    CHECK(worst_dissipation < 1e-5);
+    CHECK(largest(h, "balance_error") < bound);
+    CHECK(largest(h, "newton_iterations") <= 6);
+  }
+
+  void
+  stick(const std::string &scene, const std::string &workdir)
+  {
+    const double mu = 0.3;
+    const auto   simulator
+      = amfrac_test::run_scene<3>(scene, sliding(1e-5, workdir));
+    const History    &h        = simulator->history();
+    const std::size_t last     = h.n_rows() - 1;
+    const double      friction = h.value(last, "body_contact_friction_force");
+    const double      normal   = h.value(last, "body_contact_normal_force");
+    std::cout << "stick: friction " << friction << " of mu N " << mu * normal
+              << ", reaction " << h.value(last, "reaction_z-_x")
+              << ", dissipated " << largest(h, "friction_dissipation")
+              << ", balance " << relative_balance(h) << std::endl;
+    CHECK(friction > 0 && friction < 0.5 * mu * normal);
+    CHECK_RELATIVE(std::abs(h.value(last, "reaction_z-_x")), friction, 1e-3);
+    CHECK(largest(h, "friction_dissipation")
+          < 1e-12 * h.value(last, "external_work"));
+    CHECK(relative_balance(h) < 1e-8);
+  }
+
+  double
+  tip(const std::string &scene,
+      const std::string &text,
+      const std::string &column)
+  {
+    const auto     simulator = amfrac_test::run_scene<2>(scene, text);
+    const History &h         = simulator->history();
+    return h.value(h.n_rows() - 1, column);
+  }
+
+  void
+  stack(const std::string &scene, const std::string &workdir)
+  {
+    const double q = 0.01, length = 20;
+    const auto   simulator
+      = amfrac_test::run_scene<2>(scene, output_to(workdir + "/stack"));
+    const History    &h    = simulator->history();
+    const std::size_t last = h.n_rows() - 1;
+    const double top = h.value(last, "p0_uy"), bottom = h.value(last, "p1_uy");
+    const double single
+      = tip(scene,
+            "subsection Geometry\n  set Stacking sequence = [0]\nend\n"
+            "subsection Boundary conditions\n  set Function constants = "
+            "q=0.005\nend\n"
+            "subsection Contact\n  set Enable = false\n"
+            "  set Unbonded interfaces =\nend\n"
+            "subsection Output\n  set Point values = 20, 1\nend\n"
+              + output_to(workdir + "/single"),
+            "p0_uy");
+    const double bonded  = tip(scene,
+                              "subsection Contact\n  set Enable = false\n"
+                               "  set Unbonded interfaces =\nend\n"
+                                + output_to(workdir + "/bonded"),
+                              "p0_uy");
+    const double carried = h.value(last, "body_contact_normal_force");
+    std::cout << "stack: tips " << top << ", " << bottom << "; single ply "
+              << single << ", bonded " << bonded << " (ratio " << top / bonded
+              << "); contact force " << carried << " of " << q * length / 2
+              << ", balance " << relative_balance(h) << ", Newton iterations "
+              << largest(h, "newton_iterations") << std::endl;
+    CHECK_RELATIVE(top, bottom, 1e-3);
+    CHECK_RELATIVE(top, single, 1e-3);
+    CHECK(top / bonded > 3.5 && top / bonded < 4);
+    CHECK_RELATIVE(carried, q * length / 2, 0.05);
+    CHECK(largest(h, "newton_iterations") <= 4);
+    CHECK(relative_balance(h) < 1e-4);
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  if (argc != 4)
+    {
+      std::cerr << "usage: app_static_contact "
+                   "blocks|blocks_2d|shifted|friction|stick|stack SCENE.prm "
+                   "WORKDIR"
+                << std::endl;
+      return 2;
+    }
+  const std::string which = argv[1], scene = argv[2], workdir = argv[3];
+  if (which == "blocks")
+    blocks(scene, workdir);
+  else if (which == "blocks_2d")
+    blocks_2d(scene, workdir);
+  else if (which == "shifted")
+    shifted(scene, workdir);
+  else if (which == "friction")
+    friction(scene, workdir);
+  else if (which == "stick")
+    stick(scene, workdir);
+  else if (which == "stack")
+    stack(scene, workdir);
+  else
+    {
+      std::cerr << "unknown case " << which << std::endl;
+      return 2;
+    }
+  return amfrac_test::summary();
+}
