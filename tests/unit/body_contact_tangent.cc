@@ -82,11 +82,14 @@ namespace
     for (const auto i : owned)
       {
         const unsigned int component = dofs.component(i);
-        u(i)                         = small(random);
+        // One write per entry: a Trilinos vector takes inserts or adds
+        // between compresses, not both.
+        double value = small(random);
         if (upper[i] && component == dim - 1)
-          u(i) -= push;
+          value -= push;
         if (upper[i] && component < dim - 1)
-          u(i) += 0.005;
+          value += 0.005;
+        u(i) = value;
         d(i) = unit(random);
       }
     u.compress(VectorOperation::insert);
