@@ -219,6 +219,12 @@ namespace amfrac
       thinnest = std::min(thinnest, 2 * face.depth);
     margin           = faces.empty() ? 0. : 0.2 * thinnest;
     candidates_built = false;
+    // The last surface's pairs and matrix couplings index its nodes.
+    pairs.clear();
+    coupled_start.clear();
+    coupled.clear();
+    outdated         = false;
+    pairs_factorized = false;
     history.assign(nodes.size(), History());
     previous.assign(nodes.size(), Tensor<1, dim>());
     positions.assign(nodes.size(), Point<dim>());

@@ -443,9 +443,11 @@ namespace amfrac
     // A total Lagrangian bulk changes with every iteration.
     // Plastic plies: likewise if no point was plastic in this tangent nor
     // in the factorized one.
-    // Contact: likewise if no node touches now nor did then.
+    // Contact: likewise if no node touches now nor did then. The sphere's
+    // tangent changes with every iterate.
     const bool unchanged
-      = !finite_strain && (interfaces || plasticity || body_contact)
+      = !finite_strain && !impactor
+        && (interfaces || plasticity || body_contact)
         && Utilities::MPI::min(
              (!interfaces || interfaces->tangent_unchanged())
                  && (!plasticity || plasticity->tangent_unchanged())

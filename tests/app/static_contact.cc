@@ -28,8 +28,9 @@
 //   dissipates mu N times the slip of each step (1e-5; measured 2.6e-6:
 //   while sliding, the whole increment is slip); the balance is within the
 //   trapezoidal rule's error on the step in which the blocks start to
-//   slide, mu N s / 2 (measured 2.4e-7 of 5.9e-3); at most 6 Newton
-//   iterations per step (measured 1 to 6, median 4);
+//   slide, mu N s / 2 (measured 2.4e-7 of 5.9e-3); at most 5 Newton
+//   iterations per step (measured 4 per sliding step; without the
+//   friction tangent the first sliding step does not converge);
 // - stick: 1e-5 per unit t: the friction force stays below mu N and is
 //   the support's reaction (1e-3), nothing is dissipated (1e-12 of the
 //   work), balance 1e-8 of the work (measured 1.9e-9);
@@ -220,7 +221,7 @@ namespace
     CHECK(worst_reaction < 1e-3);
     CHECK(worst_dissipation < 1e-5);
     CHECK(largest(h, "balance_error") < bound);
-    CHECK(largest(h, "newton_iterations") <= 6);
+    CHECK(largest(h, "newton_iterations") <= 5);
   }
 
   void

@@ -8,9 +8,11 @@
 // add_tangent_product() and add_tangent() (into the couplings of
 // add_couplings()) agree with each other to round-off, and with the
 // differences up to what the tangent leaves out, the turning of the normal
-// times the gap (k g dn): below 1 % of |K d| at push = 3e-4, and ten times
-// more at ten times the push (a missing first-order term would not
-// scale so).
+// times the gap (k g dn): below 1 % of |K d| at push = 3e-4 mm (6e-4 of a
+// cell), and ten times more at ten times the push (a missing first-order
+// term would not scale so). With friction (mu = 0.3, static: the history
+// committed at the pressed state), the upper block then slid by 1e-5 mm
+// (every node sticks) or 1e-3 mm (every node slips): below 1 % too.
 #include "../check.h"
 
 #include <amfrac/contact/body_contact.h>
@@ -36,10 +38,15 @@ namespace
     return force;
   }
 
-  /** |K d - FD| / |K d| at a penetration @p push. */
+  /** |K d - FD| / |K d| at a penetration @p push. With @p slide >= 0:
+   * friction (mu = 0.3, static), the history committed at the pressed
+   * state, then the upper block moved along x by @p slide; @p slipping
+   * tells whether every node in contact slips (friction = mu N). */
   template <int dim>
   double
-  tangent_error(const double push)
+  tangent_error(const double push,
+                const double slide    = -1,
+                bool        *slipping = nullptr)
   {
     Triangulation<dim>        tria;
     std::vector<unsigned int> cells(dim, 2);
@@ -58,17 +65,19 @@ namespace
     parameters::Contact p;
     p.active            = true;
     p.penalty           = 1e3;
-    p.friction          = 0;
+    p.friction          = slide >= 0 ? 0.3 : 0;
     p.tangential_factor = 1;
     BodyContact<dim> contact(p, MPI_COMM_WORLD);
+    if (slide >= 0)
+      contact.set_static();
     contact.setup(dofs, released, {});
 
     const IndexSet &owned = dofs.locally_owned_dofs();
     TrilinosVector  u(owned, MPI_COMM_WORLD), d(owned, MPI_COMM_WORLD);
     std::mt19937    random(7);
     std::uniform_real_distribution<double> small(-1e-4, 1e-4), unit(-1, 1);
-    // The upper block moves down into the lower one and sideways by a
-    // fifth of a cell (the nodes leave the other block's vertices).
+    // The upper block moves down into the lower one and sideways by 1 %
+    // of a cell (the nodes leave the other block's vertices).
     std::vector<bool>                    upper(dofs.n_dofs(), false);
     std::vector<types::global_dof_index> indices(
       dofs.get_fe().n_dofs_per_cell());
@@ -94,15 +103,32 @@ namespace
       }
     u.compress(VectorOperation::insert);
     d.compress(VectorOperation::insert);
+    if (slide >= 0)
+      {
+        // The friction history of the pressed state, then the slide.
+        TrilinosVector force(u), shift(owned, MPI_COMM_WORLD);
+        contact.evaluate(u, force);
+        contact.commit();
+        for (const auto i : owned)
+          if (upper[i] && dofs.component(i) == 0)
+            shift(i) = slide;
+        shift.compress(VectorOperation::insert);
+        u += shift;
+      }
 
     TrilinosWrappers::SparsityPattern pattern(owned, MPI_COMM_WORLD);
     contact.add_couplings(u, pattern);
     pattern.compress();
-    const TrilinosVector base = residual(contact, u);
-    std::cout << dim << "D: " << contact.columns()[0].second
-              << " nodes in contact" << std::endl;
-    CHECK(contact.columns()[0].second >= (dim == 3 ? 9 : 3));
-    CHECK(!contact.couplings_outdated());
+    const TrilinosVector base    = residual(contact, u);
+    const auto           columns = contact.columns();
+    const double friction = columns[2].second, normal = columns[1].second;
+    std::cout << dim << "D: " << columns[0].second << " nodes in contact";
+    if (slide >= 0)
+      std::cout << ", friction / (mu N) " << friction / (0.3 * normal);
+    std::cout << std::endl;
+    CHECK(columns[0].second >= (dim == 3 ? 9 : 3));
+    if (slipping)
+      *slipping = std::abs(friction / (0.3 * normal) - 1) < 1e-12;
 
     TrilinosWrappers::SparseMatrix matrix(pattern);
     AffineConstraints<double>      none;
@@ -144,6 +170,16 @@ namespace
               << " at 3e-3" << std::endl;
     CHECK(near < 1e-2);
     CHECK(far > 5 * near && far < 20 * near);
+    // Friction: sticking (a slide of a tenth of mu g, the stick springs'
+    // reach) and slipping (ten times mu g).
+    bool         stick_slips = true, slip_slips = false;
+    const double stick = tangent_error<dim>(3e-4, 1e-5, &stick_slips),
+                 slip  = tangent_error<dim>(3e-4, 1e-3, &slip_slips);
+    std::cout << "  with friction: relative error " << stick << " sticking, "
+              << slip << " slipping" << std::endl;
+    CHECK(!stick_slips && slip_slips);
+    CHECK(stick < 1e-2);
+    CHECK(slip < 1e-2);
   }
 } // namespace
 
