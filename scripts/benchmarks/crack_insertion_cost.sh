@@ -6,15 +6,21 @@
 # insertion" (release, DoF layer, interface elements, Newton state) and
 # "crack check" (the Hoffman check after every step) and the whole run,
 # median of REPEAT runs, into doc/benchmarks/crack_insertion_cost.csv.
+# Then the same bar in explicit dynamics (tests/app/explicit_cracked_bar.prm)
+# with the candidates restricted to the weakened section, so that the same
+# 16 faces crack on every mesh: the insertion events, their cost and one
+# internal-force evaluation (a time step's main cost) for comparison, into
+# doc/benchmarks/crack_insertion_cost_explicit.csv.
 # usage: scripts/benchmarks/crack_insertion_cost.sh BUILD_DIR [REPEAT]
 set -eu
 build=$(cd "$1" && pwd) repeat=${2:-5}
 root=$(cd "$(dirname "$0")/../.." && pwd)
 work=$(mktemp -d)
-out=$root/doc/benchmarks/crack_insertion_cost.csv
-echo "elements_along_length,cells,unknowns,faces,insertion_s,check_s,checks,run_s" > "$out"
-for n in 16 64 256; do
-  cat "$root/prm/cracked_bar_2d.prm" > "$work/bar.prm"
+# $work/bar.prm: the files $2... with the bar in 3D, N = $1 along.
+bar_3d() {
+  local n=$1
+  shift
+  cat "$@" > "$work/bar.prm"
   cat >> "$work/bar.prm" <<PRM
 set Dimension = 3
 subsection Geometry
@@ -35,6 +41,11 @@ subsection Output
   set Directory = $work/out
 end
 PRM
+}
+out=$root/doc/benchmarks/crack_insertion_cost.csv
+echo "elements_along_length,cells,unknowns,faces,insertion_s,check_s,checks,run_s" > "$out"
+for n in 16 64 256; do
+  bar_3d "$n" "$root/prm/cracked_bar_2d.prm"
   # Odd n would not put a face at x = 2; the scene needs n a multiple of 2.
   ins=() chk=() run=()
   for r in $(seq "$repeat"); do
@@ -49,6 +60,28 @@ PRM
   unknowns=$(sed -n 's/.* \([0-9]*\) cells, \([0-9]*\) unknowns.*/\2/p' "$work/log" | head -1)
   faces=$(grep -c "face(s) cracked" "$work/log")
   echo "$n,$cells,$unknowns,$faces,$(median "${ins[@]}"),$(median "${chk[@]}"),$checks,$(median "${run[@]}")" >> "$out"
+done
+cat "$out"
+
+out=$root/doc/benchmarks/crack_insertion_cost_explicit.csv
+echo "elements_along_length,cells,unknowns,faces,events,insertion_s,forces_per_step_ms,steps,run_s" > "$out"
+for n in 16 64 256; do
+  bar_3d "$n" "$root/prm/cracked_bar_2d.prm" \
+    "$root/tests/app/explicit_cracked_bar.prm"
+  printf 'subsection Crack insertion\n  set Region = abs(x - 2) < 1e-3\nend\n' >> "$work/bar.prm"
+  ins=() frc=() run=()
+  for r in $(seq "$repeat"); do
+    "$build/amfrac" "$work/bar.prm" > "$work/log"
+    ins+=("$(awk -F'|' '/^\| crack insertion/ {gsub(/s/,"",$4); print $4+0}' "$work/log")")
+    frc+=("$(awk -F'|' '/^\| internal forces/ {gsub(/s/,"",$4); print 1000*$4/$3}' "$work/log")")
+    run+=("$(awk -F'|' '/Total wallclock/ {gsub(/s/,"",$3); print $3+0}' "$work/log")")
+  done
+  steps=$(awk -F'|' '/^\| internal forces/ {print $3+0}' "$work/log")
+  events=$(awk -F'|' '/^\| crack insertion/ {print $3+0}' "$work/log")
+  cells=$(sed -n 's/.* \([0-9]*\) cells, \([0-9]*\) unknowns.*/\1/p' "$work/log" | head -1)
+  unknowns=$(sed -n 's/.* \([0-9]*\) cells, \([0-9]*\) unknowns.*/\2/p' "$work/log" | head -1)
+  faces=$(tail -1 "$work/out/cracks.csv" | cut -d, -f4)
+  echo "$n,$cells,$unknowns,$faces,$events,$(median "${ins[@]}"),$(median "${frc[@]}"),$steps,$(median "${run[@]}")" >> "$out"
 done
 cat "$out"
 rm -rf "$work"

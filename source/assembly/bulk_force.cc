@@ -38,6 +38,50 @@ namespace amfrac
     , kernel(dofs.get_fe().n_dofs_per_cell())
     , interfaces(interfaces)
   {
+    find_shapes(dofs);
+    lay_out(dofs, assembler);
+  }
+
+
+
+  template <int dim>
+  void
+  BulkForceOperator<dim>::renumber(const TiedCopyDoFs<dim>     &dofs,
+                                   const ElasticAssembler<dim> &assembler)
+  {
+    AssertThrow(shape_of_cell.size()
+                  == dofs.copy_handler().get_triangulation().n_active_cells(),
+                ExcMessage("BulkForceOperator::renumber() needs the mesh of "
+                           "the operator's construction"));
+    kernel.clear_elements();
+    owned_elements = 0;
+    lay_out(dofs, assembler);
+  }
+
+
+
+  template <int dim>
+  void
+  BulkForceOperator<dim>::find_shapes(const TiedCopyDoFs<dim> &dofs)
+  {
+    std::map<std::vector<long long>, unsigned int> index;
+    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
+      {
+        const auto [entry, added]
+          = index.emplace(shape_key<dim>(cell), shapes.size());
+        if (added)
+          shapes.emplace_back(cell, -1);
+        shape_of_cell.push_back(entry->second);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  BulkForceOperator<dim>::lay_out(const TiedCopyDoFs<dim>     &dofs,
+                                  const ElasticAssembler<dim> &assembler)
+  {
     // Every cell with an owned dof is evaluated here, owned or not, so
     // that each owned entry of K u is summed on one rank, term by term as
     // on a single rank (no partial sums of other ranks).
@@ -45,20 +89,25 @@ namespace amfrac
     const unsigned int                   n = dofs.get_fe().n_dofs_per_cell();
     std::vector<types::global_dof_index> indices(n);
     IndexSet                             ghosts = dofs.locally_relevant_dofs();
-    std::vector<bool>                    evaluated(
-      dofs.copy_handler().get_triangulation().n_active_cells());
+    std::vector<bool>                    evaluated(shape_of_cell.size());
     // An owned cell all of whose dofs belong to other ranks is evaluated
     // too, for its strain energy (its forces are not used here).
     for (const auto &cell : dofs.copy_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         evaluated[cell->active_cell_index()] = true;
+    std::vector<bool> needed(dofs.n_dofs(), false);
     for (const auto &cell : cells)
       {
         evaluated[cell->active_cell_index()] = true;
         dofs.get_dof_indices(cell, indices);
-        std::sort(indices.begin(), indices.end());
-        ghosts.add_indices(indices.begin(), indices.end());
+        for (const auto i : indices)
+          needed[i] = true;
       }
+    std::vector<types::global_dof_index> sorted;
+    for (types::global_dof_index i = 0; i < needed.size(); ++i)
+      if (needed[i])
+        sorted.push_back(i);
+    ghosts.add_indices(sorted.begin(), sorted.end());
     ghosts.compress();
     const auto partitioner
       = std::make_shared<Utilities::MPI::Partitioner>(dofs.locally_owned_dofs(),
@@ -87,19 +136,14 @@ namespace amfrac
     const unsigned int                   n = dofs.get_fe().n_dofs_per_cell();
     std::vector<types::global_dof_index> indices(n);
     std::vector<unsigned int>            local(n);
-    using Cell = typename TiedCopyDoFs<dim>::CellIterator;
-    // Per shape: its first cell, and its matrix in the kernel (-1: none
-    // yet).
-    std::map<std::vector<long long>, std::pair<Cell, int>> shapes;
-    FullMatrix<double>                                     K(n, n);
-    std::vector<double>                                    row_major(n * n);
+    FullMatrix<double>                   K(n, n);
+    std::vector<double>                  row_major(n * n);
     for (const auto &cell : dofs.copy_handler().active_cell_iterators())
       {
-        auto &[first, matrix]
-          = shapes.emplace(shape_key<dim>(cell), std::make_pair(cell, -1))
-              .first->second;
         if (!evaluated[cell->active_cell_index()])
           continue;
+        auto &[first, matrix]
+          = shapes[shape_of_cell[cell->active_cell_index()]];
         if (matrix < 0)
           {
             assembler.element_stiffness(first, K);

@@ -613,18 +613,37 @@ namespace amfrac
 
   template <int dim>
   void
-  ElasticAssembler<dim>::lumped_mass(Vector &mass) const
+  ElasticAssembler<dim>::lumped_mass(Vector                 &mass,
+                                     dealii::Vector<double> &copy_masses) const
   {
-    const auto                          &fe        = dofs.get_fe();
-    FEValues<dim>                        fe_values = lobatto_values(dofs);
+    const auto                          &fe = dofs.get_fe();
     dealii::Vector<double>               m(fe.n_dofs_per_cell());
-    std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> copies(fe.n_dofs_per_cell()),
+      indices(fe.n_dofs_per_cell());
+    // Every cell: after an insertion a rank may own a dof of a cell it
+    // did not before.
+    if (copy_masses.size() != dofs.n_copies())
+      {
+        copy_masses.reinit(dofs.n_copies());
+        FEValues<dim> fe_values = lobatto_values(dofs);
+        for (const auto &cell : dofs.copy_handler().active_cell_iterators())
+          {
+            fe_values.reinit(cell);
+            lobatto_lumped_mass(fe_values,
+                                plies[cell->material_id()].density,
+                                m);
+            cell->get_dof_indices(copies);
+            for (unsigned int i = 0; i < copies.size(); ++i)
+              copy_masses[copies[i]] = m(i);
+          }
+      }
     mass = 0;
     for (const auto &cell : dofs.cells_with_owned_dofs())
       {
-        fe_values.reinit(cell);
+        cell->get_dof_indices(copies);
+        for (unsigned int i = 0; i < copies.size(); ++i)
+          m(i) = copy_masses[copies[i]];
         dofs.get_dof_indices(cell, indices);
-        lobatto_lumped_mass(fe_values, plies[cell->material_id()].density, m);
         add_owned(indices, m, mass);
       }
     mass.compress(VectorOperation::add);

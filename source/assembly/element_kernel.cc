@@ -22,6 +22,16 @@ namespace amfrac
 
 
   void
+  ElementMatrixKernel::clear_elements()
+  {
+    element_matrix.clear();
+    energy_weight.clear();
+    element_dofs.clear();
+  }
+
+
+
+  void
   ElementMatrixKernel::add_element(const unsigned int  matrix,
                                    const unsigned int *local_dofs,
                                    const bool          counts)

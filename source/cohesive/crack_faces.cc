@@ -7,6 +7,7 @@
 #include <amfrac/parameters/input_error.h>
 #include <deal.II/base/mpi.h>
 #include <functional>
+#include <iterator>
 #include <sstream>
 
 namespace amfrac
@@ -61,9 +62,13 @@ namespace amfrac
     Assert(!cell->at_boundary(face) && cell->neighbor(face)->is_active()
              && !cell->neighbor_is_coarser(face),
            ExcMessage("a crack needs a regular interior face"));
-    cracked.insert({cell->id(), face});
+    // A face added again (from its other side, as add_cracks() does) is
+    // one face to build.
+    if (!cracked.insert({cell->id(), face}).second)
+      return;
     cracked.insert(
       {cell->neighbor(face)->id(), cell->neighbor_of_neighbor(face)});
+    unbuilt.emplace_back(cell->id(), face);
   }
 
 
@@ -179,30 +184,39 @@ namespace amfrac
     const CrackTraction                               &traction,
     const std::function<double(const CellIterator &)> &toughness)
   {
-    std::map<std::pair<CellId, unsigned int>, Element> old;
+    // The elements there move to the new numbering.
     for (Element &element : elements)
-      {
-        const auto key = std::make_pair(element.cell, element.face);
-        old.emplace(key, std::move(element));
-      }
-    make_elements(dofs);
-
+      for (unsigned int k = 0; k < element.copies.size(); ++k)
+        element.dofs[k] = dofs.reduced_index(element.copies[k]);
+    // The new cracks' elements, from the lower side (the smaller CellId),
+    // on the rank that owns it, in the order of make_elements().
     const auto &handler = dofs.copy_handler();
     const auto &tria    = handler.get_triangulation();
+    std::vector<std::pair<CellIterator, unsigned int>> faces;
+    for (const auto &[id, f] : unbuilt)
+      {
+        const auto   cell = tria.create_cell_iterator(id);
+        CellIterator side(&tria, cell->level(), cell->index(), &handler);
+        unsigned int face = f;
+        if (side->neighbor(f)->id() < side->id())
+          {
+            face = side->neighbor_of_neighbor(f);
+            side = side->neighbor(f);
+          }
+        if (side->is_locally_owned())
+          faces.emplace_back(side, face);
+      }
+    unbuilt.clear();
+    std::sort(faces.begin(), faces.end(), [](const auto &a, const auto &b) {
+      return std::make_pair(a.first->active_cell_index(), a.second)
+             < std::make_pair(b.first->active_cell_index(), b.second);
+    });
+    std::vector<Element> added = build_elements(dofs, faces);
+
     CrackReport report;
     std::string failure;
-    for (Element &element : elements)
+    for (Element &element : added)
       {
-        const auto kept = old.find({element.cell, element.face});
-        if (kept != old.end())
-          {
-            element.converged  = kept->second.converged;
-            element.trial      = kept->second.trial;
-            element.status     = kept->second.status;
-            element.assembled  = kept->second.assembled;
-            element.factorized = kept->second.factorized;
-            continue;
-          }
         Assert(element.interface == data.interfaces.size(), ExcInternalError());
         const auto         cell = tria.create_cell_iterator(element.cell);
         CellIterator       lower(&tria, cell->level(), cell->index(), &handler);
@@ -256,6 +270,19 @@ namespace amfrac
               failure = "a crack would start without traction";
           }
       }
+    // Both lists are in the order of the active cells, then faces.
+    std::vector<Element> merged;
+    merged.reserve(elements.size() + added.size());
+    std::merge(std::make_move_iterator(elements.begin()),
+               std::make_move_iterator(elements.end()),
+               std::make_move_iterator(added.begin()),
+               std::make_move_iterator(added.end()),
+               std::back_inserter(merged),
+               [](const Element &a, const Element &b) {
+                 return std::make_pair(a.active_cell, a.face)
+                        < std::make_pair(b.active_cell, b.face);
+               });
+    elements            = std::move(merged);
     const MPI_Comm comm = tria.get_communicator();
     if (Utilities::MPI::max(failure.empty() ? 0 : 1, comm) > 0)
       {

@@ -211,6 +211,7 @@ namespace amfrac
     element.coarse_cell = cell->id().get_coarse_cell_id();
     element.cell        = cell->id();
     element.face        = face;
+    element.active_cell = cell->active_cell_index();
     element.box         = coarse_cell_box<dim>(cell);
     element.interface   = is_crack(cell, face) ?
                             data.interfaces.size() :
@@ -221,8 +222,8 @@ namespace amfrac
                             - data.interfaces.begin();
     std::vector<types::global_dof_index> lower_dofs(fe.n_dofs_per_cell()),
       upper_dofs(fe.n_dofs_per_cell());
-    dofs.get_dof_indices(cell, lower_dofs);
-    dofs.get_dof_indices(neighbor, upper_dofs);
+    cell->get_dof_indices(lower_dofs);
+    neighbor->get_dof_indices(upper_dofs);
     const auto        &lower_local = dofs.dofs_on_face(face);
     const auto        &upper_local = dofs.dofs_on_face(neighbor_face);
     const unsigned int n_q         = lower.n_quadrature_points;
@@ -246,7 +247,8 @@ namespace amfrac
       }
     for (unsigned int k = 0; k < lower_local.size(); ++k)
       {
-        element.dofs.push_back(lower_dofs[lower_local[k]]);
+        element.copies.push_back(lower_dofs[lower_local[k]]);
+        element.dofs.push_back(dofs.reduced_index(element.copies.back()));
         element.component.push_back(
           fe.system_to_component_index(lower_local[k]).first);
         for (unsigned int q = 0; q < n_q; ++q)
@@ -255,7 +257,8 @@ namespace amfrac
     for (unsigned int k = 0; k < upper_local.size(); ++k)
       {
         const unsigned int column = lower_local.size() + k;
-        element.dofs.push_back(upper_dofs[upper_local[k]]);
+        element.copies.push_back(upper_dofs[upper_local[k]]);
+        element.dofs.push_back(dofs.reduced_index(element.copies.back()));
         element.component.push_back(
           fe.system_to_component_index(upper_local[k]).first);
         for (unsigned int q = 0; q < n_q; ++q)
@@ -328,17 +331,9 @@ namespace amfrac
   void
   CohesiveInterfaces<dim>::make_elements(const TiedCopyDoFs<dim> &dofs)
   {
-    elements.clear();
-    const unsigned int n_nodes = dofs.get_fe().degree + 1;
-    set_point_regions(n_nodes);
-    // The bulk's map: an interface face with an edge on a curved hole is
-    // integrated over the same curved face as the solid around it.
-    const auto &mapping = dofs.get_mapping();
-    const auto  flags   = update_values | update_quadrature_points
-                       | update_JxW_values | update_normal_vectors;
-    const auto        rules = face_rules(dofs, n_nodes);
-    FEFaceValues<dim> lower(mapping, dofs.get_fe(), rules, flags);
-    FEFaceValues<dim> upper(mapping, dofs.get_fe(), rules, flags);
+    unbuilt.clear();
+    set_point_regions(dofs.get_fe().degree + 1);
+    std::vector<std::pair<CellIterator, unsigned int>> faces;
     for (const auto &cell : dofs.copy_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         for (const unsigned int f : cell->face_indices())
@@ -348,8 +343,32 @@ namespace amfrac
                  && cell->neighbor(f)->material_id() > cell->material_id())
                 || (is_crack(cell, f) && cell->id() < cell->neighbor(f)->id());
             if (lower_side)
-              elements.push_back(make_element(dofs, cell, f, lower, upper));
+              faces.emplace_back(cell, f);
           }
+    elements = build_elements(dofs, faces);
+  }
+
+
+
+  template <int dim>
+  std::vector<typename CohesiveInterfaces<dim>::Element>
+  CohesiveInterfaces<dim>::build_elements(
+    const TiedCopyDoFs<dim>                                  &dofs,
+    const std::vector<std::pair<CellIterator, unsigned int>> &faces) const
+  {
+    const unsigned int n_nodes = dofs.get_fe().degree + 1;
+    // The bulk's map: an interface face with an edge on a curved hole is
+    // integrated over the same curved face as the solid around it.
+    const auto &mapping = dofs.get_mapping();
+    const auto  flags   = update_values | update_quadrature_points
+                       | update_JxW_values | update_normal_vectors;
+    const auto           rules = face_rules(dofs, n_nodes);
+    FEFaceValues<dim>    lower(mapping, dofs.get_fe(), rules, flags);
+    FEFaceValues<dim>    upper(mapping, dofs.get_fe(), rules, flags);
+    std::vector<Element> built;
+    for (const auto &[cell, f] : faces)
+      built.push_back(make_element(dofs, cell, f, lower, upper));
+    return built;
   }
 
 

@@ -166,16 +166,9 @@ namespace amfrac
 
   template <int dim>
   void
-  TiedCopyDoFs<dim>::distribute(const FaceFilter &released,
-                                const bool        same_mesh)
+  TiedCopyDoFs<dim>::distribute(const FaceFilter &released)
   {
-    // The copies of an unchanged mesh are numbered as before.
-    if (!same_mesh || copy_position.size() != dof_handler.n_dofs()
-        || copy_position.empty())
-      {
-        dof_handler.distribute_dofs(*fe);
-        copy_position.clear();
-      }
+    dof_handler.distribute_dofs(*fe);
     const unsigned int n_local = fe->n_dofs_per_cell();
     if (!mapping)
       {
@@ -203,63 +196,107 @@ namespace amfrac
 
     // Real positions of all copies: copies are tied by position, so no
     // face-orientation logic is needed.
-    if (copy_position.empty())
+    copy_position.resize(dof_handler.n_dofs());
+    FEValues<dim>                        fe_values(get_linear_mapping(),
+                            *fe,
+                            Quadrature<dim>(fe->get_unit_support_points()),
+                            update_quadrature_points);
+    std::vector<types::global_dof_index> local(n_local);
+    for (const auto &cell : dof_handler.active_cell_iterators())
       {
-        copy_position.resize(dof_handler.n_dofs());
-        FEValues<dim>                        fe_values(get_linear_mapping(),
-                                *fe,
-                                Quadrature<dim>(fe->get_unit_support_points()),
-                                update_quadrature_points);
-        std::vector<types::global_dof_index> local(n_local);
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          {
-            fe_values.reinit(cell);
-            cell->get_dof_indices(local);
-            for (unsigned int i = 0; i < n_local; ++i)
-              copy_position[local[i]] = fe_values.quadrature_point(i);
-          }
+        fe_values.reinit(cell);
+        cell->get_dof_indices(local);
+        for (unsigned int i = 0; i < n_local; ++i)
+          copy_position[local[i]] = fe_values.quadrature_point(i);
       }
 
-    std::vector<types::global_dof_index> parent(dof_handler.n_dofs());
+    parent.resize(dof_handler.n_dofs());
     for (types::global_dof_index i = 0; i < parent.size(); ++i)
       parent[i] = i;
-    tie_faces(released, copy_position, parent);
+    tie_faces(released);
     // A fine copy on a hanging face that sits on a node of the coarse
     // neighbour is that node (a union); the others interpolate the coarse
     // face (a constraint on the reduced numbering, built after numbering).
-    std::vector<std::pair<types::global_dof_index, HangingWeights>> hanging;
-    for_each_hanging_copy(released,
-                          copy_position,
-                          [&](const auto copy, const auto &weights) {
-                            if (weights.size() == 1)
-                              unite(parent, copy, weights[0].first);
-                            else
-                              hanging.emplace_back(copy, weights);
-                          });
-    number_groups(parent, copy_position, released);
+    hanging_ties.clear();
+    hanging_copies.clear();
+    for_each_hanging_copy(released, [&](const auto copy, const auto &weights) {
+      if (weights.size() == 1)
+        hanging_ties.emplace_back(copy, weights[0].first);
+      else
+        hanging_copies.emplace_back(copy, weights);
+    });
+    for (const auto &[fine, coarse] : hanging_ties)
+      unite(parent, fine, coarse);
+    index_copies(released);
+    number_groups();
+  }
 
-    hanging_constraints.clear();
-    for (const auto &[copy, weights] : hanging)
+
+
+  template <int dim>
+  void
+  TiedCopyDoFs<dim>::release(const std::vector<Face> &faces,
+                             const FaceFilter        &released)
+  {
+    AssertThrow(released && !parent.empty()
+                  && parent.size() == dof_handler.n_dofs()
+                  && active_cells.size() == triangulation.n_active_cells(),
+                ExcMessage("TiedCopyDoFs::release() needs a filter and the "
+                           "mesh of the last distribute()"));
+    // The groups of the copies on the new faces split (or not); all other
+    // groups keep their copies.
+    const unsigned int                   n_local = fe->n_dofs_per_cell();
+    std::vector<types::global_dof_index> mine(n_local), theirs(n_local);
+    std::vector<bool>                    affected(n_dofs(), false);
+    for (const auto &[cell, f] : faces)
       {
-        const auto line = copy_to_reduced[copy];
-        if (hanging_constraints.is_constrained(line))
-          continue;
-        hanging_constraints.add_line(line);
-        for (const auto &[coarse, weight] : weights)
-          hanging_constraints.add_entry(line, copy_to_reduced[coarse], weight);
+        // A hanging face would change the hanging ties and constraints,
+        // which release() keeps.
+        AssertThrow(!cell->at_boundary(f) && cell->neighbor(f)->is_active()
+                      && !cell->neighbor_is_coarser(f),
+                    ExcMessage("TiedCopyDoFs::release() takes regular "
+                               "interior faces only"));
+        const auto neighbor = cell->neighbor(f);
+        cell->get_dof_indices(mine);
+        neighbor->get_dof_indices(theirs);
+        for (const unsigned int i : face_dofs[f])
+          affected[copy_to_reduced[mine[i]]] = true;
+        for (const unsigned int i : face_dofs[cell->neighbor_of_neighbor(f)])
+          affected[copy_to_reduced[theirs[i]]] = true;
+        // Interface elements on the face couple the two cells.
+        if (cell->is_locally_owned())
+          relevant_copies.insert(relevant_copies.end(),
+                                 theirs.begin(),
+                                 theirs.end());
+        if (neighbor->is_locally_owned())
+          relevant_copies.insert(relevant_copies.end(),
+                                 mine.begin(),
+                                 mine.end());
       }
-    hanging_constraints.close();
-    // The coarse dofs that a relevant hanging dof depends on are relevant
-    // too: this rank writes into their rows.
-    std::vector<types::global_dof_index> extra;
-    for (const auto &line : hanging_constraints.get_lines())
-      if (relevant_dofs.is_element(line.index))
-        for (const auto &entry : line.entries)
-          extra.push_back(entry.first);
-    std::sort(extra.begin(), extra.end());
-    extra.erase(std::unique(extra.begin(), extra.end()), extra.end());
-    relevant_dofs.add_indices(extra.begin(), extra.end());
-    relevant_dofs.compress();
+    std::vector<unsigned int> cells;
+    for (types::global_dof_index c = 0; c < parent.size(); ++c)
+      if (affected[copy_to_reduced[c]])
+        {
+          parent[c] = c;
+          cells.push_back(copy_cell[c]);
+        }
+    std::sort(cells.begin(), cells.end());
+    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+    // Tie the affected copies again across the faces that stay tied (from
+    // both sides: a union is idempotent). A copy tied to an affected copy
+    // was in its group, so it is affected too.
+    for (const unsigned int index : cells)
+      {
+        const CellIterator &cell = active_cells[index];
+        for (const unsigned int f : cell->face_indices())
+          if (!cell->at_boundary(f) && !cell->neighbor_is_coarser(f)
+              && !cell->neighbor(f)->has_children() && !released(cell, f))
+            tie_face(cell, f, mine, theirs);
+      }
+    for (const auto &[fine, coarse] : hanging_ties)
+      if (affected[copy_to_reduced[fine]])
+        unite(parent, fine, coarse);
+    number_groups();
   }
 
 
@@ -267,10 +304,8 @@ namespace amfrac
   template <int dim>
   template <typename Callback>
   void
-  TiedCopyDoFs<dim>::for_each_hanging_copy(
-    const FaceFilter              &released,
-    const std::vector<Point<dim>> &copy_position,
-    const Callback                &callback) const
+  TiedCopyDoFs<dim>::for_each_hanging_copy(const FaceFilter &released,
+                                           const Callback   &callback) const
   {
     const Mapping<dim>                  &mapping = get_linear_mapping();
     const unsigned int                   n_local = fe->n_dofs_per_cell();
@@ -310,10 +345,29 @@ namespace amfrac
 
   template <int dim>
   void
-  TiedCopyDoFs<dim>::tie_faces(
-    const FaceFilter                     &released,
-    const std::vector<Point<dim>>        &copy_position,
-    std::vector<types::global_dof_index> &parent) const
+  TiedCopyDoFs<dim>::tie_face(const CellIterator                   &cell,
+                              const unsigned int                    f,
+                              std::vector<types::global_dof_index> &mine,
+                              std::vector<types::global_dof_index> &theirs)
+  {
+    const auto         neighbor = cell->neighbor(f);
+    const unsigned int nf       = cell->neighbor_of_neighbor(f);
+    cell->get_dof_indices(mine);
+    neighbor->get_dof_indices(theirs);
+    const double tol = 1e-8 * cell->diameter();
+    for (const unsigned int i : face_dofs[f])
+      for (const unsigned int j : face_dofs[nf])
+        if (fe->system_to_component_index(i).first
+              == fe->system_to_component_index(j).first
+            && copy_position[mine[i]].distance(copy_position[theirs[j]]) < tol)
+          unite(parent, mine[i], theirs[j]);
+  }
+
+
+
+  template <int dim>
+  void
+  TiedCopyDoFs<dim>::tie_faces(const FaceFilter &released)
   {
     const unsigned int                   n_local = fe->n_dofs_per_cell();
     std::vector<types::global_dof_index> mine(n_local), theirs(n_local);
@@ -325,22 +379,11 @@ namespace amfrac
           // Hanging faces are tied by for_each_hanging_copy().
           if (cell->neighbor_is_coarser(f) || cell->neighbor(f)->has_children())
             continue;
-          const auto neighbor = cell->neighbor(f);
           // Each conforming face once, from the cell with the lower index.
-          if (neighbor->index() < cell->index()
+          if (cell->neighbor(f)->index() < cell->index()
               || (released && released(cell, f)))
             continue;
-          const unsigned int nf = cell->neighbor_of_neighbor(f);
-          cell->get_dof_indices(mine);
-          neighbor->get_dof_indices(theirs);
-          const double tol = 1e-8 * cell->diameter();
-          for (const unsigned int i : face_dofs[f])
-            for (const unsigned int j : face_dofs[nf])
-              if (fe->system_to_component_index(i).first
-                    == fe->system_to_component_index(j).first
-                  && copy_position[mine[i]].distance(copy_position[theirs[j]])
-                       < tol)
-                unite(parent, mine[i], theirs[j]);
+          tie_face(cell, f, mine, theirs);
         }
   }
 
@@ -348,83 +391,136 @@ namespace amfrac
 
   template <int dim>
   void
-  TiedCopyDoFs<dim>::number_groups(std::vector<types::global_dof_index> &parent,
-                                   const std::vector<Point<dim>> &copy_position,
-                                   const FaceFilter              &released)
+  TiedCopyDoFs<dim>::index_copies(const FaceFilter &released)
   {
     const MPI_Comm     comm    = triangulation.get_communicator();
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
-    const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
     const unsigned int n_local = fe->n_dofs_per_cell();
     const unsigned int n_nodes = n_local / dim;
 
-    // Visit the cells rank by rank and, inside a cell, node by node: a
-    // group gets its number at its first visit, so ranks own contiguous
-    // blocks and the components of a node are consecutive.
+    // Cells rank by rank and, inside a cell, node by node: a group gets
+    // its number at its first visit, so ranks own contiguous blocks and
+    // the components of a node are consecutive.
     std::vector<std::vector<CellIterator>> cells_of_rank(n_ranks);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      cells_of_rank[n_ranks == 1 ? 0 : cell->subdomain_id()].push_back(cell);
-
-    const auto                           invalid = numbers::invalid_dof_index;
-    std::vector<types::global_dof_index> group_number(parent.size(), invalid);
+    active_cells.clear();
+    copy_cell.resize(dof_handler.n_dofs());
+    relevant_copies.clear();
     std::vector<types::global_dof_index> local(n_local);
-    support_points.clear();
-    components.clear();
-    types::global_dof_index owned_begin = 0, owned_end = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cells_of_rank[n_ranks == 1 ? 0 : cell->subdomain_id()].push_back(cell);
+        active_cells.push_back(cell);
+        cell->get_dof_indices(local);
+        for (const auto c : local)
+          copy_cell[c] = cell->active_cell_index();
+        if (!cell->is_locally_owned())
+          continue;
+        relevant_copies.insert(relevant_copies.end(),
+                               local.begin(),
+                               local.end());
+        // Interface elements on a released face couple the cell with its
+        // neighbour: this rank assembles into the neighbour's rows too.
+        if (released)
+          for (const unsigned int f : cell->face_indices())
+            if (!cell->at_boundary(f) && !cell->neighbor(f)->has_children()
+                && released(cell, f))
+              {
+                cell->neighbor(f)->get_dof_indices(local);
+                relevant_copies.insert(relevant_copies.end(),
+                                       local.begin(),
+                                       local.end());
+              }
+      }
+    visit_order.clear();
+    rank_visits.assign(1, 0);
     for (unsigned int rank = 0; rank < n_ranks; ++rank)
       {
-        if (rank == my_rank)
-          owned_begin = support_points.size();
         for (const auto &cell : cells_of_rank[rank])
           {
             cell->get_dof_indices(local);
             for (unsigned int node = 0; node < n_nodes; ++node)
               for (unsigned int c = 0; c < dim; ++c)
-                {
-                  const auto copy
-                    = local[fe->component_to_system_index(c, node)];
-                  const auto root = find_root(parent, copy);
-                  if (group_number[root] != invalid)
-                    continue;
-                  group_number[root] = support_points.size();
-                  support_points.push_back(copy_position[copy]);
-                  components.push_back(c);
-                }
+                visit_order.push_back(
+                  local[fe->component_to_system_index(c, node)]);
+          }
+        rank_visits.push_back(visit_order.size());
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  TiedCopyDoFs<dim>::number_groups()
+  {
+    const MPI_Comm     comm    = triangulation.get_communicator();
+    const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
+    const auto         invalid = numbers::invalid_dof_index;
+    std::vector<types::global_dof_index> group_number(parent.size(), invalid);
+    support_points.clear();
+    components.clear();
+    types::global_dof_index owned_begin = 0, owned_end = 0;
+    for (unsigned int rank = 0; rank + 1 < rank_visits.size(); ++rank)
+      {
+        if (rank == my_rank)
+          owned_begin = support_points.size();
+        for (std::size_t v = rank_visits[rank]; v < rank_visits[rank + 1]; ++v)
+          {
+            const auto copy = visit_order[v];
+            const auto root = find_root(parent, copy);
+            if (group_number[root] != invalid)
+              continue;
+            group_number[root] = support_points.size();
+            support_points.push_back(copy_position[copy]);
+            // Every cell visits its nodes' dim components in turn.
+            components.push_back(v % dim);
           }
         if (rank == my_rank)
           owned_end = support_points.size();
       }
 
+    // Flat: every copy points at its root (release() resets groups).
     copy_to_reduced.resize(parent.size());
     for (types::global_dof_index c = 0; c < parent.size(); ++c)
-      copy_to_reduced[c] = group_number[find_root(parent, c)];
+      {
+        parent[c]          = find_root(parent, c);
+        copy_to_reduced[c] = group_number[parent[c]];
+      }
 
     owned_dofs = IndexSet(n_dofs());
     owned_dofs.add_range(owned_begin, owned_end);
-    relevant_dofs = owned_dofs;
-    std::vector<types::global_dof_index> relevant;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          cell->get_dof_indices(local);
-          for (const auto c : local)
-            relevant.push_back(copy_to_reduced[c]);
-          // Interface elements on a released face couple the cell with its
-          // neighbour: this rank assembles into the neighbour's rows too.
-          if (released)
-            for (const unsigned int f : cell->face_indices())
-              if (!cell->at_boundary(f) && !cell->neighbor(f)->has_children()
-                  && released(cell, f))
-                {
-                  cell->neighbor(f)->get_dof_indices(local);
-                  for (const auto c : local)
-                    relevant.push_back(copy_to_reduced[c]);
-                }
-        }
-    std::sort(relevant.begin(), relevant.end());
-    relevant.erase(std::unique(relevant.begin(), relevant.end()),
-                   relevant.end());
-    relevant_dofs.add_indices(relevant.begin(), relevant.end());
+    std::vector<bool> relevant(n_dofs(), false);
+    for (const auto c : relevant_copies)
+      relevant[copy_to_reduced[c]] = true;
+    for (auto i = owned_begin; i < owned_end; ++i)
+      relevant[i] = true;
+
+    hanging_constraints.clear();
+    for (const auto &[copy, weights] : hanging_copies)
+      {
+        const auto line = copy_to_reduced[copy];
+        if (hanging_constraints.is_constrained(line))
+          continue;
+        hanging_constraints.add_line(line);
+        for (const auto &[coarse, weight] : weights)
+          hanging_constraints.add_entry(line, copy_to_reduced[coarse], weight);
+      }
+    hanging_constraints.close();
+    // The coarse dofs that a relevant hanging dof depends on are relevant
+    // too: this rank writes into their rows.
+    std::vector<types::global_dof_index> extra;
+    for (const auto &line : hanging_constraints.get_lines())
+      if (relevant[line.index])
+        for (const auto &entry : line.entries)
+          extra.push_back(entry.first);
+    for (const auto i : extra)
+      relevant[i] = true;
+    std::vector<types::global_dof_index> indices;
+    for (types::global_dof_index i = 0; i < n_dofs(); ++i)
+      if (relevant[i])
+        indices.push_back(i);
+    relevant_dofs = IndexSet(n_dofs());
+    relevant_dofs.add_indices(indices.begin(), indices.end());
     relevant_dofs.compress();
   }
 
@@ -447,18 +543,17 @@ namespace amfrac
   std::vector<typename TiedCopyDoFs<dim>::CellIterator>
   TiedCopyDoFs<dim>::cells_with_owned_dofs() const
   {
-    std::vector<CellIterator>            cells;
-    std::vector<types::global_dof_index> local(fe->n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        cell->get_dof_indices(local);
-        if (std::any_of(local.begin(),
-                        local.end(),
-                        [&](const types::global_dof_index c) {
-                          return owned_dofs.is_element(copy_to_reduced[c]);
-                        }))
-          cells.push_back(cell);
-      }
+    // One pass over the copies (the owned dofs are one range).
+    std::vector<bool> has_owned(active_cells.size(), false);
+    const auto        begin = owned_dofs.is_empty() ? 0 : *owned_dofs.begin();
+    const auto        end   = begin + owned_dofs.n_elements();
+    for (types::global_dof_index c = 0; c < copy_to_reduced.size(); ++c)
+      if (copy_to_reduced[c] >= begin && copy_to_reduced[c] < end)
+        has_owned[copy_cell[c]] = true;
+    std::vector<CellIterator> cells;
+    for (std::size_t i = 0; i < active_cells.size(); ++i)
+      if (has_owned[i])
+        cells.push_back(active_cells[i]);
     return cells;
   }
 
@@ -473,6 +568,15 @@ namespace amfrac
            + copy_to_reduced.capacity() * sizeof(types::global_dof_index)
            + support_points.capacity() * sizeof(Point<dim>)
            + copy_position.capacity() * sizeof(Point<dim>)
+           + (parent.capacity() + visit_order.capacity()
+              + relevant_copies.capacity())
+               * sizeof(types::global_dof_index)
+           + copy_cell.capacity() * sizeof(unsigned int)
+           + active_cells.capacity() * sizeof(CellIterator)
+           + rank_visits.capacity() * sizeof(std::size_t)
+           + hanging_ties.capacity() * 2 * sizeof(types::global_dof_index)
+           + hanging_copies.capacity()
+               * (sizeof(types::global_dof_index) + sizeof(HangingWeights))
            + components.capacity() + owned_dofs.memory_consumption()
            + relevant_dofs.memory_consumption();
   }

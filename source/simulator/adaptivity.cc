@@ -248,7 +248,33 @@ namespace amfrac
   void
   Simulator<dim>::rebuild_after_mesh_change(const bool same_mesh)
   {
-    dof_layer.distribute(released_faces(), same_mesh);
+    if (same_mesh)
+      {
+        // Crack insertion: only the new cracks' nodes are grouped again.
+        std::vector<typename TiedCopyDoFs<dim>::Face> faces;
+        const auto &handler = dof_layer.copy_handler();
+        for (const auto &[id, f] : interfaces->unbuilt_cracks())
+          {
+            const auto cell = triangulation.create_cell_iterator(id);
+            // A crack face is no candidate of the crack check any more.
+            if (!candidate_faces.empty())
+              {
+                candidate_faces[cell->active_cell_index()] &= ~(1u << f);
+                candidate_faces[cell->neighbor(f)->active_cell_index()]
+                  &= ~(1u << cell->neighbor_of_neighbor(f));
+              }
+            faces.emplace_back(
+              typename TiedCopyDoFs<dim>::CellIterator(
+                &triangulation, cell->level(), cell->index(), &handler),
+              f);
+          }
+        dof_layer.release(faces, released_faces());
+      }
+    else
+      {
+        dof_layer.distribute(released_faces());
+        forget_crack_candidates();
+      }
     if (plasticity)
       plasticity->setup();
     lever.collect(dof_layer);

@@ -301,6 +301,7 @@ namespace amfrac
     if (cracks)
       strength = strength_scale_by_face();
     triangulation.execute_coarsening_and_refinement();
+    forget_crack_candidates();
     if (cracks)
       {
         interfaces->follow_mesh_change(triangulation);

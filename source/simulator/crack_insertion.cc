@@ -9,6 +9,7 @@
 #include <amfrac/simulator/simulator.h>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/matrix_free/fe_point_evaluation.h>
@@ -243,18 +244,55 @@ namespace amfrac
     std::vector<types::global_dof_index> dofs(
       dof_layer.get_fe().n_dofs_per_cell());
     dof_layer.get_dof_indices(cell, dofs);
-    const FEValuesExtractors::Vector displacement(0);
-    std::vector<PlyStress>           result;
-    for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
-      {
-        SymmetricTensor<2, dim> strain;
-        for (unsigned int i = 0; i < dofs.size(); ++i)
-          strain
-            += state(dofs[i]) * values[displacement].symmetric_gradient(i, q);
-        result.push_back(
-          evaluate_ply_stress(plies[cell->material_id()], strain));
-      }
+    // Each entry read once (a Trilinos element access looks the index
+    // up), then the strains from the local values.
+    std::vector<double> local(dofs.size());
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      local[i] = state(dofs[i]);
+    std::vector<SymmetricTensor<2, dim>> strains(values.n_quadrature_points);
+    values[FEValuesExtractors::Vector(0)]
+      .get_function_symmetric_gradients_from_local_dof_values(local, strains);
+    std::vector<PlyStress> result;
+    for (const auto &strain : strains)
+      result.push_back(evaluate_ply_stress(plies[cell->material_id()], strain));
     return result;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::find_crack_candidates() const
+  {
+    if (candidates_found
+        && candidate_faces.size() == triangulation.n_active_cells())
+      return;
+    candidates_found = true;
+    candidate_cells.clear();
+    constexpr unsigned int n_faces = GeometryInfo<dim>::faces_per_cell;
+    candidate_faces.assign(triangulation.n_active_cells(), 0);
+    for (const auto &cell : dof_layer.copy_handler().active_cell_iterators())
+      {
+        if (!cell->is_locally_owned())
+          continue;
+        std::uint8_t &bits = candidate_faces[cell->active_cell_index()];
+        for (unsigned int f = 0; f < n_faces; ++f)
+          if (crack_candidate(cell, f))
+            bits |= std::uint8_t(1u << f);
+        if (bits != 0)
+          candidate_cells.push_back(cell);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::forget_crack_candidates()
+  {
+    candidates_found = false;
+    candidate_cells.clear();
+    candidate_faces.clear();
   }
 
 
@@ -274,27 +312,23 @@ namespace amfrac
     // Hoffman index being convex) at least one side fails on its own.
     // One FEValues for all cells: the face centres in reference
     // coordinates are the same for every cell.
-    FEValues<dim>                at_centres(dof_layer.get_mapping(),
+    FEValues<dim>             at_centres(dof_layer.get_mapping(),
                              dof_layer.get_fe(),
                              Quadrature<dim>(centres),
                              update_gradients);
-    std::map<FaceKey, PlyStress> sides;
-    std::vector<unsigned int>    local_failing;
-    for (const auto &cell : dof_layer.copy_handler().active_cell_iterators())
+    std::vector<unsigned int> local_failing;
+    find_crack_candidates();
+    for (const auto &cell : candidate_cells)
       {
-        if (!cell->is_locally_owned())
-          continue;
-        std::vector<unsigned int> faces;
-        for (unsigned int f = 0; f < n_faces; ++f)
-          if (crack_candidate(cell, f))
-            faces.push_back(f);
-        if (faces.empty())
+        const std::uint8_t bits = candidate_faces[cell->active_cell_index()];
+        if (bits == 0)
           continue;
         const auto stresses
           = cell_stresses(cell, at_centres, relevant_solution);
-        for (const unsigned int f : faces)
+        for (unsigned int f = 0; f < n_faces; ++f)
           {
-            sides[key_of<dim>(cell, f)] = stresses[f];
+            if ((bits & (1u << f)) == 0)
+              continue;
             const double scale
               = crack_strength_scale[cell->active_cell_index() * n_faces + f];
             const auto &strengths = plies[cell->material_id()].strengths;
@@ -314,28 +348,34 @@ namespace amfrac
       return {};
     const std::vector<FaceKey> failing(failing_set.begin(), failing_set.end());
 
-    // Round 2: both sides of every failing face, from their owners.
+    // Round 2: both sides of every failing face, from their owners (the
+    // stresses of round 1 again, for these few cells).
     const auto cell_of = [&](const FaceKey &key) {
       return triangulation.create_cell_iterator(
         CellId(std::array<unsigned int, 4>{{key[0], key[1], key[2], key[3]}}));
     };
+    const auto         &handler = dof_layer.copy_handler();
     std::vector<double> contributions;
     for (unsigned int i = 0; i < failing.size(); ++i)
       {
         const auto         cell     = cell_of(failing[i]);
         const unsigned int f        = failing[i][4];
         const auto         neighbor = cell->neighbor(f);
-        for (const FaceKey &side :
-             {failing[i], key_of<dim>(neighbor, cell->neighbor_of_neighbor(f))})
+        for (const auto &[side, face] :
+             {std::make_pair(cell, f),
+              std::make_pair(neighbor, cell->neighbor_of_neighbor(f))})
           {
-            const auto found = sides.find(side);
-            if (found == sides.end())
+            if (!side->is_locally_owned())
               continue;
+            const typename DoFHandler<dim>::active_cell_iterator on_copies(
+              &triangulation, side->level(), side->index(), &handler);
+            const PlyStress stress
+              = cell_stresses(on_copies, at_centres, relevant_solution)[face];
             contributions.push_back(i);
             for (const auto &pair : voigt_pairs)
-              contributions.push_back(found->second.material[pair[0]][pair[1]]);
+              contributions.push_back(stress.material[pair[0]][pair[1]]);
             for (const auto &pair : voigt_pairs)
-              contributions.push_back(found->second.model[pair[0]][pair[1]]);
+              contributions.push_back(stress.model[pair[0]][pair[1]]);
           }
       }
     std::vector<SymmetricTensor<2, 3>> material(failing.size()),

@@ -393,9 +393,14 @@ namespace amfrac
     // Hanging nodes (a locally refined mesh): forces and masses act on
     // the masters (C^T), the hanging entries follow them.
     std::unique_ptr<HangingCondensation<dim>> hanging;
-    const auto                                lump_mass = [&]() {
+    // The masses of the copies, kept while the mesh stays (crack
+    // insertion only regroups the copies).
+    dealii::Vector<double> copy_masses;
+    const auto             lump_mass = [&](const bool same_mesh = false) {
       TimerOutput::Scope scope(timer, "lumped mass");
-      assembler.lumped_mass(mass);
+      if (!same_mesh)
+        copy_masses.reinit(0);
+      assembler.lumped_mass(mass, copy_masses);
       hanging = std::make_unique<HangingCondensation<dim>>(dof_layer, comm);
       hanging->condense(mass);
     };
@@ -481,11 +486,15 @@ namespace amfrac
 
     std::unique_ptr<BulkForceOperator<dim>>  bulk;
     typename ElasticAssembler<dim>::CellList loaded_cells;
-    const auto                               build_operators = [&]() {
+    // After crack insertion (same_mesh) the element matrices stay.
+    const auto build_operators = [&](const bool same_mesh = false) {
       TimerOutput::Scope scope(timer, "element matrices");
-      bulk = std::make_unique<BulkForceOperator<dim>>(dof_layer,
-                                                      assembler,
-                                                      interfaces.get());
+      if (same_mesh)
+        bulk->renumber(dof_layer, assembler);
+      else
+        bulk = std::make_unique<BulkForceOperator<dim>>(dof_layer,
+                                                        assembler,
+                                                        interfaces.get());
       loaded_cells = assembler.loaded_cells(loads);
     };
     build_operators();
@@ -898,9 +907,9 @@ namespace amfrac
                 insert_explicit_cracks(chosen,
                                        {&solution, &velocity, &last_good});
                 layout(false);
-                lump_mass();
+                lump_mass(true);
                 split_mass();
-                build_operators();
+                build_operators(true);
                 if (body_contact)
                   body_contact->setup(dof_layer,
                                       released_faces(),

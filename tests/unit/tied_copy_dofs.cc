@@ -6,10 +6,12 @@
 #include <amfrac/dofs/tied_copy_dofs.h>
 #include <cmath>
 #include <deal.II/base/mpi.h>
+#include <deal.II/distributed/shared_tria.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <set>
 
 using namespace amfrac;
 
@@ -142,6 +144,103 @@ namespace
       std::cerr << "  " << dim << "D Q" << degree << ": " << free_copies
                 << " free unknowns, FE_Q has " << free_q << std::endl;
   }
+
+  bool
+  near(const double a, const double b)
+  {
+    return std::abs(a - b) < 1e-12;
+  }
+
+  /** Crack insertion's release() gives the numbering a fresh
+   * distribute() gives: rounds of faces released one after the other on a
+   * mesh with hanging nodes (released faces next to the refined cells),
+   * on the ranks the test runs on. */
+  template <int dim>
+  void
+  check_release_equals_distribute(const unsigned int degree)
+  {
+    parallel::shared::Triangulation<dim> tria(MPI_COMM_WORLD);
+    std::vector<unsigned int>            cells(dim, 4);
+    cells[0] = 6;
+    Point<dim> far;
+    for (unsigned int d = 0; d < dim; ++d)
+      far[d] = cells[d];
+    GridGenerator::subdivided_hyper_rectangle(tria, cells, Point<dim>(), far);
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->center()[0] > 4 && cell->center()[1] > 2)
+        cell->set_refine_flag();
+    tria.execute_coarsening_and_refinement();
+
+    using Key = std::pair<CellId, unsigned int>;
+    std::set<Key> released;
+    const auto    filter = [&](const auto &cell, const unsigned int f) {
+      return released.count({cell->id(), f}) > 0;
+    };
+    TiedCopyDoFs<dim> incremental(tria, degree);
+    incremental.distribute(filter);
+    // Round 1: the plane x = 3 below y = 2 (a crack from the boundary);
+    // round 2: its continuation and a branch along y = 2 (a T, nodes
+    // split three ways); round 3: the faces x = 4 next to the refined
+    // cells (hanging nodes around them).
+    const std::vector<std::function<bool(const Point<dim> &)>> rounds{
+      [](const Point<dim> &c) { return near(c[0], 3) && c[1] < 2; },
+      [](const Point<dim> &c) {
+        return (near(c[0], 3) && c[1] < 3) || (near(c[1], 2) && c[0] < 3);
+      },
+      [](const Point<dim> &c) { return near(c[0], 4) && c[1] < 2; }};
+    for (const auto &in_round : rounds)
+      {
+        std::vector<typename TiedCopyDoFs<dim>::Face> faces;
+        for (const auto &cell :
+             incremental.copy_handler().active_cell_iterators())
+          for (const unsigned int f : cell->face_indices())
+            if (!cell->at_boundary(f) && cell->neighbor(f)->is_active()
+                && !cell->neighbor_is_coarser(f)
+                && in_round(cell->face(f)->center())
+                && released.count({cell->id(), f}) == 0)
+              {
+                released.insert({cell->id(), f});
+                released.insert(
+                  {cell->neighbor(f)->id(), cell->neighbor_of_neighbor(f)});
+                faces.emplace_back(cell, f);
+              }
+        CHECK(!faces.empty());
+        const auto before = incremental.n_dofs();
+        incremental.release(faces, filter);
+        CHECK(incremental.n_dofs() > before);
+        TiedCopyDoFs<dim> fresh(tria, degree);
+        fresh.distribute(filter);
+        CHECK(incremental.n_dofs() == fresh.n_dofs());
+        CHECK(incremental.locally_owned_dofs() == fresh.locally_owned_dofs());
+        CHECK(incremental.locally_relevant_dofs()
+              == fresh.locally_relevant_dofs());
+        unsigned int                         differ = 0;
+        std::vector<types::global_dof_index> a(
+          fresh.get_fe().n_dofs_per_cell()),
+          b(a.size());
+        for (const auto &cell : fresh.copy_handler().active_cell_iterators())
+          {
+            fresh.get_dof_indices(cell, a);
+            incremental.get_dof_indices(cell, b);
+            differ += a != b;
+          }
+        for (types::global_dof_index i = 0; i < fresh.n_dofs(); ++i)
+          differ += fresh.support_point(i) != incremental.support_point(i)
+                    || fresh.component(i) != incremental.component(i);
+        const auto &lines = fresh.hanging_node_constraints().get_lines();
+        const auto &other = incremental.hanging_node_constraints().get_lines();
+        CHECK(lines.size() > 0);
+        differ += lines.size() != other.size();
+        for (std::size_t l = 0; l < std::min(lines.size(), other.size()); ++l)
+          differ += lines[l].index != other[l].index
+                    || lines[l].entries != other[l].entries;
+        CHECK(differ == 0);
+        if (differ != 0)
+          std::cerr << "  " << dim << "D Q" << degree << ": " << differ
+                    << " differences after " << faces.size() << " faces"
+                    << std::endl;
+      }
+  }
 } // namespace
 
 int
@@ -157,6 +256,11 @@ main(int argc, char *argv[])
     }
 
   check_splitting_3d();
+  for (const unsigned int degree : {1u, 2u})
+    {
+      check_release_equals_distribute<2>(degree);
+      check_release_equals_distribute<3>(degree);
+    }
 
   // 2 x 2 squares, Q1: 9 nodes. Releasing the lower half of the vertical
   // mid-line splits its boundary node (1,0) only: the centre node (1,1) is

@@ -29,6 +29,16 @@ namespace amfrac
                       const ElasticAssembler<dim> &assembler,
                       CohesiveInterfaces<dim>     *interfaces = nullptr);
 
+    /** After crack insertion (the mesh unchanged, the numbering new): the
+     * elements move to the new numbering and keep their shapes' matrices
+     * (a shape is not looked up again; only a shape no cell of this rank
+     * evaluated before gets its matrix now, and matrices no longer used
+     * stay in the table, so summary() may count more than a fresh
+     * operator). */
+    void
+    renumber(const TiedCopyDoFs<dim>     &dofs,
+             const ElasticAssembler<dim> &assembler);
+
     /** @p force = K @p solution (both without ghosts), plus the interface
      * forces if @p with_interfaces (which updates and commits their
      * history); returns the strain energy of the plies summed over all
@@ -43,6 +53,18 @@ namespace amfrac
     summary() const;
 
   private:
+    using Cell = typename TiedCopyDoFs<dim>::CellIterator;
+
+    /** Sort the cells into shapes (shape_of_cell, shapes). */
+    void
+    find_shapes(const TiedCopyDoFs<dim> &dofs);
+
+    /** The ghosted vectors and the kernel's elements on the current
+     * numbering. */
+    void
+    lay_out(const TiedCopyDoFs<dim>     &dofs,
+            const ElasticAssembler<dim> &assembler);
+
     /** The kernel's elements: the cells flagged in @p evaluated (by
      * active cell index), in the order of the active cells. */
     void
@@ -50,6 +72,11 @@ namespace amfrac
                  const ElasticAssembler<dim>       &assembler,
                  const std::vector<bool>           &evaluated,
                  const Utilities::MPI::Partitioner &partitioner);
+
+    /** Per active cell its shape; per shape the first cell of the mesh
+     * with it and its matrix in the kernel (-1: none yet). */
+    std::vector<unsigned int>         shape_of_cell;
+    std::vector<std::pair<Cell, int>> shapes;
 
     MPI_Comm                                           comm;
     ElementMatrixKernel                                kernel;

@@ -108,9 +108,14 @@ namespace amfrac
     /** The lumped mass of every reduced dof: the consistent mass
      * integrated with the Gauss-Lobatto rule on the element's nodes,
      * which is diagonal and positive for Q1 and Q2 (a row sum with the
-     * Gauss rule would give Q2 corner nodes negative mass). */
+     * Gauss rule would give Q2 corner nodes negative mass). Keeps the
+     * mass of every copy of every cell in
+     * @p copy_masses (copy_handler() numbering); if it has one entry per
+     * copy already (after crack insertion: the copies keep their masses,
+     * only the groups change), the sums come from it without integrating
+     * again, term by term as lumped_mass() adds them. */
     void
-    lumped_mass(Vector &mass) const;
+    lumped_mass(Vector &mass, dealii::Vector<double> &copy_masses) const;
 
     /** The same for the dofs of one element (in its local order). */
     void

@@ -25,6 +25,10 @@ namespace amfrac
     unsigned int
     add_matrix(const std::vector<double> &matrix);
 
+    /** Forget the elements, keep the matrices (a new numbering). */
+    void
+    clear_elements();
+
     /** Add an element with matrix @p matrix and the local indices of its
      * dofs in the arrays apply() works on; its strain energy counts only
      * if @p counts (an element evaluated on several ranks counts on one). */

@@ -91,6 +91,15 @@ namespace amfrac
     void
     follow_mesh_change(const Triangulation<dim> &triangulation);
 
+    /** The cracks added since the elements were last built (each face
+     * once, from the side it was added from): the faces the DoF layer
+     * releases before rebuild() builds their elements. */
+    const std::vector<std::pair<CellId, unsigned int>> &
+    unbuilt_cracks() const
+    {
+      return unbuilt;
+    }
+
     /** Number of inserted crack faces (each once, all ranks: the set is
      * replicated). */
     std::size_t
@@ -119,9 +128,10 @@ namespace amfrac
     };
 
     /**
-     * After the DoF layer was distributed again with new cracks released
-     * (the mesh unchanged): rebuild the elements on the new numbering.
-     * Existing elements keep their converged and trial states; the points
+     * After the DoF layer released the unbuilt cracks (the mesh
+     * unchanged): the existing elements move to the new numbering with
+     * their converged and trial states, and only the new cracks' elements
+     * are built (the cost is that of the new faces). The points
      * of a new crack start at the traction T0 of the converged state
      * (@p traction, the mean stress of the two cells times the normal) on
      * an extrinsic law with the ply's fracture energy @p toughness (of the
@@ -424,8 +434,13 @@ namespace amfrac
        * (level-0) cell: lower and upper corner. */
       std::pair<Point<dim>, Point<dim>> box;
       /** Position in the list of interfaces; its size for a crack. */
-      unsigned int                         interface;
+      unsigned int interface;
+      /** The active cell index of the lower cell (the elements are in
+       * the order of the active cells, then faces). */
+      unsigned int                         active_cell;
       std::vector<types::global_dof_index> dofs; ///< lower face, upper face
+      /** The copies (TiedCopyDoFs::copy_handler()) behind dofs. */
+      std::vector<types::global_dof_index> copies;
       std::vector<unsigned char>           component;
       /** shape(q, k): the value of local dof k at point q, negative on the
        * lower face, so that the gap is sum_k shape(q, k) u_k. */
@@ -461,13 +476,14 @@ namespace amfrac
     const parameters::CohesiveInterfaces data;
     /** Inserted crack faces, each from both sides; penalty of their law
      * (0: no crack insertion). */
-    std::set<std::pair<CellId, unsigned int>> cracked;
-    double                                    crack_penalty  = 0;
-    double                                    crack_friction = 0;
-    const cohesive::SeedLawProperties         law;
-    const cohesive::CamanhoDavilaProperties   camanho_davila;
-    std::vector<Element>                      elements;
-    double                                    time_step = 1;
+    std::set<std::pair<CellId, unsigned int>>    cracked;
+    std::vector<std::pair<CellId, unsigned int>> unbuilt;
+    double                                       crack_penalty  = 0;
+    double                                       crack_friction = 0;
+    const cohesive::SeedLawProperties            law;
+    const cohesive::CamanhoDavilaProperties      camanho_davila;
+    std::vector<Element>                         elements;
+    double                                       time_step = 1;
 
     /** Evaluate point @p q of @p element at @p global_gap (trial state,
      * local @p tangent); returns its traction in the global frame times
@@ -556,6 +572,13 @@ namespace amfrac
      * ply interface, the smaller CellId for a crack. */
     void
     make_elements(const TiedCopyDoFs<dim> &dofs);
+
+    /** The elements of the faces @p faces (lower side, locally owned
+     * cells, in the order given). */
+    std::vector<Element>
+    build_elements(
+      const TiedCopyDoFs<dim>                                  &dofs,
+      const std::vector<std::pair<CellIterator, unsigned int>> &faces) const;
 
     /** The element of @p face of @p cell (the lower ply's side); @p lower
      * and @p upper evaluate the two faces. */

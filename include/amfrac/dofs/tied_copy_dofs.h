@@ -52,13 +52,22 @@ namespace amfrac
     /** Build the copies and the tie map; faces for which @p released
      * returns true stay untied. On a hanging face, a fine copy that sits on
      * a coarse node is tied to it and the others are constrained to
-     * interpolate the coarse face (hanging_node_constraints()). With
-     * @p same_mesh (more faces released on the mesh of the last call,
-     * which has not changed since: crack insertion), the copies and their
-     * positions of the last call are kept. */
+     * interpolate the coarse face (hanging_node_constraints()). */
     void
-    distribute(const FaceFilter &released  = FaceFilter(),
-               const bool        same_mesh = false);
+    distribute(const FaceFilter &released = FaceFilter());
+
+    /** A face of a cell of copy_handler(). */
+    using Face = std::pair<CellIterator, unsigned int>;
+
+    /** Release @p faces (regular interior faces, from either side) on the
+     * mesh of the last distribute(), which has not changed since: crack
+     * insertion. @p released says which faces are released now (those of
+     * the last call and @p faces). Only the groups of the copies on
+     * @p faces are formed again; the rest is a few linear passes over
+     * integer arrays (no geometry, no face matching as in distribute()).
+     * The result is the one distribute(@p released) gives. */
+    void
+    release(const std::vector<Face> &faces, const FaceFilter &released);
 
     /** The DoFHandler of the copy space (for FEValues and DataOut). */
     const DoFHandler<dim> &
@@ -181,6 +190,13 @@ namespace amfrac
     std::vector<CellIterator>
     cells_with_owned_dofs() const;
 
+    /** The reduced index of copy @p copy (a dof of copy_handler()). */
+    types::global_dof_index
+    reduced_index(const types::global_dof_index copy) const
+    {
+      return copy_to_reduced[copy];
+    }
+
     /** Reduced indices of the dofs of @p cell, in the cell's local order. */
     void
     get_dof_indices(const CellIterator                   &cell,
@@ -251,30 +267,59 @@ namespace amfrac
     AffineConstraints<double>  hanging_constraints;
     IndexSet                   relevant_dofs;
 
-    /** Union-find over copies: tie the copies of two faces that share a
-     * support point and a component. */
-    void
-    tie_faces(const FaceFilter                     &released,
-              const std::vector<Point<dim>>        &copy_position,
-              std::vector<types::global_dof_index> &parent) const;
+    /** The tie map as a union-find forest over the copies (flat after
+     * every numbering: each copy points at its group's root). */
+    std::vector<types::global_dof_index> parent;
+    /** The copies in the order the numbering visits them (rank by rank,
+     * cell by cell, node by node), with the offset of each rank's part. */
+    std::vector<types::global_dof_index> visit_order;
+    std::vector<std::size_t>             rank_visits;
+    /** The active cell (index, iterator) of each copy. */
+    std::vector<unsigned int> copy_cell;
+    std::vector<CellIterator> active_cells;
+    /** Copies whose reduced index is locally relevant: those of owned
+     * cells and of their neighbours across released faces. */
+    std::vector<types::global_dof_index> relevant_copies;
 
     /** (coarse copy, shape value) pairs that a hanging copy interpolates. */
     using HangingWeights
       = std::vector<std::pair<types::global_dof_index, double>>;
+    /** Fine copies on hanging faces that sit on a coarse node (tied to
+     * it), and those that interpolate the coarse face. */
+    std::vector<std::pair<types::global_dof_index, types::global_dof_index>>
+      hanging_ties;
+    std::vector<std::pair<types::global_dof_index, HangingWeights>>
+      hanging_copies;
+
+    /** Tie the copies of face @p f of @p cell to its neighbour's that
+     * share a support point and a component (a conforming face). */
+    void
+    tie_face(const CellIterator                   &cell,
+             const unsigned int                    f,
+             std::vector<types::global_dof_index> &mine,
+             std::vector<types::global_dof_index> &theirs);
+
+    /** tie_face() on every conforming face that is not released. */
+    void
+    tie_faces(const FaceFilter &released);
 
     /** Call @p callback(copy, weights) for every fine copy on a hanging
      * face that is not released: weights are (coarse copy, shape value)
      * pairs, a single pair when the copy sits on a coarse node. */
     template <typename Callback>
     void
-    for_each_hanging_copy(const FaceFilter              &released,
-                          const std::vector<Point<dim>> &copy_position,
-                          const Callback                &callback) const;
+    for_each_hanging_copy(const FaceFilter &released,
+                          const Callback   &callback) const;
 
+    /** visit_order, copy_cell, active_cells and relevant_copies of the
+     * mesh. */
     void
-    number_groups(std::vector<types::global_dof_index> &parent,
-                  const std::vector<Point<dim>>        &copy_position,
-                  const FaceFilter                     &released);
+    index_copies(const FaceFilter &released);
+
+    /** Number the groups of the tie map: reduced indices, support points,
+     * owned and relevant sets, hanging-node constraints. */
+    void
+    number_groups();
   };
 
 

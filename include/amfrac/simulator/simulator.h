@@ -24,6 +24,7 @@
 #include <amfrac/solvers/buckling_eigensolver.h>
 #include <amfrac/solvers/linear_solver.h>
 #include <array>
+#include <cstdint>
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/distributed/shared_tria.h>
@@ -229,6 +230,15 @@ namespace amfrac
      * field, the same on all ranks. */
     std::shared_ptr<Function<dim>> crack_region;
     std::vector<double>            crack_strength_scale;
+    /** The crack check's candidates (crack_candidate()), found once per
+     * mesh rather than per check: per active cell a bit per face, and the
+     * owned cells with a bit set when they were found. An insertion
+     * clears its faces' bits; a mesh change forgets them
+     * (forget_crack_candidates()), and the next check finds them again. */
+    mutable bool                      candidates_found = false;
+    mutable std::vector<std::uint8_t> candidate_faces;
+    mutable std::vector<typename DoFHandler<dim>::active_cell_iterator>
+      candidate_cells;
     /** The strength scale of every regular interior face (both sides),
      * by CellId and face. */
     using FaceValues = std::map<std::pair<CellId, unsigned int>, double>;
@@ -628,7 +638,8 @@ namespace amfrac
     typename TiedCopyDoFs<dim>::FaceFilter
     paired_faces() const;
     /** The same without the timer section (inside the constructor's);
-     * @p same_mesh: only more faces were released (crack insertion). */
+     * @p same_mesh: the mesh is that of the last call, and only the cracks
+     * not built yet (CohesiveInterfaces::unbuilt_cracks()) were added. */
     void
     rebuild_after_mesh_change(const bool same_mesh = false);
     /** One row of adaptivity.csv and its console line. */
@@ -660,6 +671,12 @@ namespace amfrac
      * per round; the same on every rank (collective). */
     std::vector<FailingFace>
     faces_to_crack(const unsigned int max_faces) const;
+    /** Fill candidate_faces and candidate_cells unless they are found. */
+    void
+    find_crack_candidates() const;
+    /** After a mesh change (refinement, moved vertices). */
+    void
+    forget_crack_candidates();
     /** The interface elements after the DoF layer released new faces:
      * new cracks start from the mean traction of the two cells in
      * @p converged and take their onset from @p onset (both ghosted, on
