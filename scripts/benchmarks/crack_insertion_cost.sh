@@ -42,6 +42,13 @@ subsection Output
 end
 PRM
 }
+# From the TimerOutput table of $work/log: a section's wall time [s] and
+# number of calls, the whole run's wall time, and the mesh's size.
+seconds() { awk -F'|' -v s="$1" '$2 ~ "^ "s" " {gsub(/s/,"",$4); print $4+0}' "$work/log"; }
+calls() { awk -F'|' -v s="$1" '$2 ~ "^ "s" " {print $3+0}' "$work/log"; }
+wall() { awk -F'|' '/Total wallclock/ {gsub(/s/,"",$3); print $3+0}' "$work/log"; }
+size() { sed -n "s/.* \([0-9]*\) cells, \([0-9]*\) unknowns.*/\\$1/p" "$work/log" | head -1; }
+median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
 out=$root/doc/benchmarks/crack_insertion_cost.csv
 echo "elements_along_length,cells,unknowns,faces,insertion_s,check_s,checks,run_s" > "$out"
 for n in 16 64 256; do
@@ -50,16 +57,12 @@ for n in 16 64 256; do
   ins=() chk=() run=()
   for r in $(seq "$repeat"); do
     "$build/amfrac" "$work/bar.prm" > "$work/log"
-    ins+=("$(awk -F'|' '/^\| crack insertion/ {gsub(/s/,"",$4); print $4+0}' "$work/log")")
-    chk+=("$(awk -F'|' '/^\| crack check/ {gsub(/s/,"",$4); print $4+0}' "$work/log")")
-    run+=("$(awk -F'|' '/Total wallclock/ {gsub(/s/,"",$3); print $3+0}' "$work/log")")
+    ins+=("$(seconds "crack insertion")")
+    chk+=("$(seconds "crack check")")
+    run+=("$(wall)")
   done
-  median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
-  checks=$(awk -F'|' '/^\| crack check/ {print $3+0}' "$work/log")
-  cells=$(sed -n 's/.* \([0-9]*\) cells, \([0-9]*\) unknowns.*/\1/p' "$work/log" | head -1)
-  unknowns=$(sed -n 's/.* \([0-9]*\) cells, \([0-9]*\) unknowns.*/\2/p' "$work/log" | head -1)
   faces=$(grep -c "face(s) cracked" "$work/log")
-  echo "$n,$cells,$unknowns,$faces,$(median "${ins[@]}"),$(median "${chk[@]}"),$checks,$(median "${run[@]}")" >> "$out"
+  echo "$n,$(size 1),$(size 2),$faces,$(median "${ins[@]}"),$(median "${chk[@]}"),$(calls "crack check"),$(median "${run[@]}")" >> "$out"
 done
 cat "$out"
 
@@ -72,16 +75,12 @@ for n in 16 64 256; do
   ins=() frc=() run=()
   for r in $(seq "$repeat"); do
     "$build/amfrac" "$work/bar.prm" > "$work/log"
-    ins+=("$(awk -F'|' '/^\| crack insertion/ {gsub(/s/,"",$4); print $4+0}' "$work/log")")
-    frc+=("$(awk -F'|' '/^\| internal forces/ {gsub(/s/,"",$4); print 1000*$4/$3}' "$work/log")")
-    run+=("$(awk -F'|' '/Total wallclock/ {gsub(/s/,"",$3); print $3+0}' "$work/log")")
+    ins+=("$(seconds "crack insertion")")
+    frc+=("$(awk -v t="$(seconds "internal forces")" -v n="$(calls "internal forces")" 'BEGIN {print 1000 * t / n}')")
+    run+=("$(wall)")
   done
-  steps=$(awk -F'|' '/^\| internal forces/ {print $3+0}' "$work/log")
-  events=$(awk -F'|' '/^\| crack insertion/ {print $3+0}' "$work/log")
-  cells=$(sed -n 's/.* \([0-9]*\) cells, \([0-9]*\) unknowns.*/\1/p' "$work/log" | head -1)
-  unknowns=$(sed -n 's/.* \([0-9]*\) cells, \([0-9]*\) unknowns.*/\2/p' "$work/log" | head -1)
   faces=$(tail -1 "$work/out/cracks.csv" | cut -d, -f4)
-  echo "$n,$cells,$unknowns,$faces,$events,$(median "${ins[@]}"),$(median "${frc[@]}"),$steps,$(median "${run[@]}")" >> "$out"
+  echo "$n,$(size 1),$(size 2),$faces,$(calls "crack insertion"),$(median "${ins[@]}"),$(median "${frc[@]}"),$(calls "internal forces"),$(median "${run[@]}")" >> "$out"
 done
 cat "$out"
 rm -rf "$work"
