@@ -184,6 +184,9 @@ namespace amfrac
     const CrackTraction                               &traction,
     const std::function<double(const CellIterator &)> &toughness)
   {
+    // New cracks start from the reference frame's traction (parameters
+    // refuse crack insertion with total Lagrangian kinematics).
+    Assert(!deformed_frame, ExcNotImplemented());
     // The elements there move to the new numbering.
     for (Element &element : elements)
       for (unsigned int k = 0; k < element.copies.size(); ++k)

@@ -133,8 +133,10 @@ namespace amfrac
 
   template <int dim>
   CohesiveInterfaces<dim>::CohesiveInterfaces(
-    const parameters::CohesiveInterfaces &data)
+    const parameters::CohesiveInterfaces &data,
+    const bool                            deformed_frame)
     : data(data)
+    , deformed_frame(deformed_frame)
     , law(law_properties(data))
     , camanho_davila(camanho_davila_properties(data))
   {}
@@ -265,6 +267,25 @@ namespace amfrac
           element.shape(q, column)
             = upper.shape_value(upper_local[k], match[q]);
       }
+    if (deformed_frame)
+      {
+        // The mid-surface (u_lower + u_upper) / 2 along the reference
+        // tangents: half of each face's shape gradient along them.
+        for (unsigned int a = 0; a + 1 < dim; ++a)
+          {
+            FullMatrix<double> &d = element.tangent_shape[a];
+            d.reinit(n_q, element.dofs.size());
+            for (unsigned int q = 0; q < n_q; ++q)
+              {
+                const Tensor<1, dim> &T = element.frame[q][a + 1];
+                for (unsigned int k = 0; k < lower_local.size(); ++k)
+                  d(q, k) = 0.5 * (lower.shape_grad(lower_local[k], q) * T);
+                for (unsigned int k = 0; k < upper_local.size(); ++k)
+                  d(q, lower_local.size() + k)
+                    = 0.5 * (upper.shape_grad(upper_local[k], match[q]) * T);
+              }
+          }
+      }
     element.converged.resize(n_q);
     element.trial.resize(n_q);
     element.assembled.resize(n_q);
@@ -361,7 +382,8 @@ namespace amfrac
     // integrated over the same curved face as the solid around it.
     const auto &mapping = dofs.get_mapping();
     const auto  flags   = update_values | update_quadrature_points
-                       | update_JxW_values | update_normal_vectors;
+                       | update_JxW_values | update_normal_vectors
+                       | (deformed_frame ? update_gradients : update_default);
     const auto           rules = face_rules(dofs, n_nodes);
     FEFaceValues<dim>    lower(mapping, dofs.get_fe(), rules, flags);
     FEFaceValues<dim>    upper(mapping, dofs.get_fe(), rules, flags);
@@ -475,6 +497,21 @@ namespace amfrac
           K.reinit(n, n);
         for (unsigned int k = 0; k < n; ++k)
           u(k) = solution(element.dofs[k]);
+        if (deformed_frame)
+          {
+            // The tangent changes with the frame in every iteration:
+            // never reuse a factorization.
+            deformed_element(
+              element, u, r, tangent ? &K : nullptr, &element.trial);
+            unchanged = false;
+            if (tangent)
+              for (unsigned int q = 0; q < element.JxW.size(); ++q)
+                count_contact_change(element, q);
+            force.add(element.dofs, r);
+            if (tangent)
+              constraints.distribute_local_to_global(K, element.dofs, *tangent);
+            continue;
+          }
         for (unsigned int q = 0; q < element.JxW.size(); ++q)
           {
             Tensor<1, dim> global_gap;
@@ -569,6 +606,9 @@ namespace amfrac
   void
   CohesiveInterfaces<dim>::add_forces(const double *u, double *f)
   {
+    // The explicit path has small-strain plies (parameters refuse total
+    // Lagrangian kinematics there).
+    Assert(!deformed_frame, ExcNotImplemented());
     Tensor<2, dim> D;
     double        *slots = force_sums.slots();
     for (unsigned int e = 0; e < elements.size(); ++e)
@@ -635,12 +675,26 @@ namespace amfrac
                                                const Vector &direction,
                                                Vector       &product) const
   {
-    dealii::Vector<double> r;
+    dealii::Vector<double> r, u, d;
+    FullMatrix<double>     K;
     Tensor<2, dim>         D;
     for (const Element &element : elements)
       {
         const unsigned int n = element.dofs.size();
         r.reinit(n);
+        if (deformed_frame)
+          {
+            u.reinit(n), d.reinit(n), K.reinit(n, n);
+            for (unsigned int k = 0; k < n; ++k)
+              {
+                u(k) = solution(element.dofs[k]);
+                d(k) = direction(element.dofs[k]);
+              }
+            deformed_element(element, u, r, &K, nullptr);
+            K.vmult(r, d);
+            product.add(element.dofs, r);
+            continue;
+          }
         for (unsigned int q = 0; q < element.JxW.size(); ++q)
           {
             Tensor<1, dim> gap, dgap;
@@ -666,18 +720,33 @@ namespace amfrac
 
   template <int dim>
   void
-  CohesiveInterfaces<dim>::add_opening_gradient(Vector &gradient) const
+  CohesiveInterfaces<dim>::add_opening_gradient(const Vector &solution,
+                                                Vector       &gradient) const
   {
-    dealii::Vector<double> r;
+    dealii::Vector<double>      r, u;
+    std::vector<Tensor<1, dim>> B;
+    Tensor<1, dim>              g;
     for (const Element &element : elements)
       {
-        r.reinit(element.dofs.size());
+        const unsigned int n = element.dofs.size();
+        r.reinit(n);
+        u.reinit(n);
+        if (deformed_frame)
+          for (unsigned int k = 0; k < n; ++k)
+            u(k) = solution(element.dofs[k]);
         for (unsigned int q = 0; q < element.JxW.size(); ++q)
-          if (!element.converged[q].history.debonded)
-            for (unsigned int k = 0; k < element.dofs.size(); ++k)
-              r(k) += element.shape(q, k)
-                      * element.frame[q][0][element.component[k]]
+          {
+            if (element.converged[q].history.debonded)
+              continue;
+            if (deformed_frame)
+              deformed_kinematics(element, q, u, g, B);
+            for (unsigned int k = 0; k < n; ++k)
+              r(k) += (deformed_frame ?
+                         B[k][0] :
+                         element.shape(q, k)
+                           * element.frame[q][0][element.component[k]])
                       * element.JxW[q];
+          }
         gradient.add(element.dofs, r);
       }
   }

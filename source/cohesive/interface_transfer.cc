@@ -422,13 +422,21 @@ namespace amfrac
                                   const Vector   &solution,
                                   TransferReport &report)
   {
-    Tensor<2, dim> tangent;
+    Tensor<2, dim>              tangent;
+    const unsigned int          n = element.dofs.size();
+    dealii::Vector<double>      u(n);
+    std::vector<Tensor<1, dim>> B;
+    for (unsigned int k = 0; k < n; ++k)
+      u(k) = solution(element.dofs[k]);
     for (unsigned int q = 0; q < element.points.size(); ++q)
       {
         Tensor<1, dim> global_gap;
-        for (unsigned int k = 0; k < element.dofs.size(); ++k)
-          global_gap[element.component[k]]
-            += element.shape(q, k) * solution(element.dofs[k]);
+        Tensor<2, dim> frame = element.frame[q];
+        if (deformed_frame)
+          frame = deformed_kinematics(element, q, u, global_gap, B).rows();
+        else
+          for (unsigned int k = 0; k < n; ++k)
+            global_gap[element.component[k]] += element.shape(q, k) * u(k);
         PointState &state = element.converged[q];
         // A point in the friction phase keeps its elastic stick stretch
         // (the law's tangential gap less the slip), not the slip itself:
@@ -441,7 +449,7 @@ namespace amfrac
           stretch[i]
             = state.gap[i + 1] + state.offset[i + 1] - state.history.slip[i];
         // From the new gap itself: no viscous traction, no work.
-        state.gap = element.frame[q] * global_gap;
+        state.gap = frame * global_gap;
         if (state.history.debonded)
           for (unsigned int i = 0; i + 1 < dim; ++i)
             state.history.slip[i]
@@ -487,15 +495,25 @@ namespace amfrac
         rebase(element, solution, report);
         // Both faces' shape functions at the paired points: the forces on
         // the two sides cancel if the new faces match.
+        const unsigned int          n = element.dofs.size();
+        dealii::Vector<double>      u(n);
+        std::vector<Tensor<1, dim>> B;
+        Tensor<1, dim>              g;
+        for (unsigned int k = 0; k < n; ++k)
+          u(k) = solution(element.dofs[k]);
         for (unsigned int q = 0; q < seeded.size(); ++q)
           {
-            const Tensor<1, dim> traction = transpose(element.frame[q])
-                                            * element.converged[q].traction
-                                            * element.JxW[q];
-            for (unsigned int k = 0; k < element.dofs.size(); ++k)
+            const Tensor<1, dim> &T = element.converged[q].traction;
+            if (deformed_frame)
+              deformed_kinematics(element, q, u, g, B);
+            const Tensor<1, dim> traction
+              = transpose(element.frame[q]) * T * element.JxW[q];
+            for (unsigned int k = 0; k < n; ++k)
               {
                 const double f
-                  = element.shape(q, k) * traction[element.component[k]];
+                  = deformed_frame ?
+                      (T * B[k]) * element.JxW[q] :
+                      element.shape(q, k) * traction[element.component[k]];
                 net_force[element.component[k]] += f;
                 force_sum += std::abs(f);
               }

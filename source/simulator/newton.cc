@@ -728,7 +728,15 @@ namespace amfrac
                     dof_layer.locally_relevant_dofs(),
                     comm,
                     true);
-    interfaces->add_opening_gradient(gradient);
+    {
+      // At the converged state (the frame of total Lagrangian interfaces
+      // depends on it).
+      Vector converged(dof_layer.locally_owned_dofs(),
+                       dof_layer.locally_relevant_dofs(),
+                       comm);
+      converged = n.converged_solution;
+      interfaces->add_opening_gradient(converged, gradient);
+    }
     gradient.compress(VectorOperation::add);
     Vector a(dof_layer.locally_owned_dofs(), comm);
     a                  = gradient;

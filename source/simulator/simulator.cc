@@ -86,7 +86,9 @@ namespace amfrac
     for (const auto &cell : triangulation.active_cell_iterators())
       initial_cells.insert(cell->id());
     if (!parameters.cohesive.interfaces.empty() || parameters.cracks.active)
-      interfaces = std::make_unique<CohesiveInterfaces<dim>>(prm.cohesive);
+      interfaces
+        = std::make_unique<CohesiveInterfaces<dim>>(prm.cohesive,
+                                                    prm.total_lagrangian);
     if (parameters.cracks.active)
       {
         interfaces->enable_cracks(parameters.cracks.penalty,

@@ -14,6 +14,7 @@
 //     survives gather_field() / set_field() and owned_values() /
 //     set_cell_values() unchanged.
 #include "../check.h"
+#include "two_plies.h"
 
 #include <amfrac/assembly/elastic_assembler.h>
 #include <amfrac/assembly/plastic_plies.h>
@@ -52,33 +53,14 @@ namespace
     return p;
   }
 
-  /** Two plies (+30 / -30 degrees) on 2 x 1 (x 1) cells each, the nodes
-   * on their interface duplicated; the lower one plastic. */
+  /** The two plies of the tests, the lower one plastic. */
   template <int dim>
-  struct TwoPlies
+  struct TwoPlies : amfrac_test::TwoPlies<dim>
   {
-    Triangulation<dim>                 tria;
-    std::vector<PlyProperties<dim>>    plies;
-    std::unique_ptr<TiedCopyDoFs<dim>> dofs;
-
     explicit TwoPlies(const unsigned int degree)
-    {
-      std::vector<unsigned int> cells(dim, 1);
-      cells[0]       = 2;
-      cells[dim - 1] = 2;
-      Point<dim> top;
-      for (unsigned int d = 0; d < dim; ++d)
-        top[d] = 1;
-      top[0] = 2;
-      GridGenerator::subdivided_hyper_rectangle(tria, cells, Point<dim>(), top);
-      for (const auto &cell : tria.active_cell_iterators())
-        cell->set_material_id(cell->center()[dim - 1] > 0.5 ? 1 : 0);
-      plies = {ply<dim>(30, true), ply<dim>(-30, false)};
-      dofs  = std::make_unique<TiedCopyDoFs<dim>>(tria, degree);
-      dofs->distribute([](const auto &cell, const unsigned int f) {
-        return std::abs(cell->face(f)->center()[dim - 1] - 0.5) < 1e-12;
-      });
-    }
+      : amfrac_test::TwoPlies<dim>(degree,
+                                   {ply<dim>(30, true), ply<dim>(-30, false)})
+    {}
   };
 
   /** The elastic bulk K and a matrix of its pattern. */

@@ -2,6 +2,7 @@
 
 #include <amfrac/base/ordered_sums.h>
 #include <amfrac/cohesive/camanho_davila_law.h>
+#include <amfrac/cohesive/deformed_frame.h>
 #include <amfrac/cohesive/seed_law.h>
 #include <amfrac/dofs/tied_copy_dofs.h>
 #include <amfrac/parameters/parameters.h>
@@ -36,6 +37,13 @@ namespace amfrac
    * converged step and a trial state of the current iterate, and the work
    * done on it, so that the energy ledger can split the interface work into
    * what is stored, dissipated by fracture and dissipated by friction.
+   *
+   * With total Lagrangian plies the frame follows the deformed mid-surface
+   * of the two faces (cohesive::DeformedFrame): the gap is [[u]] in the
+   * frame of the mid-surface's convected tangents, so that a delaminated
+   * sublaminate can rotate without a spurious opening or sliding, the
+   * traction is per reference area, and the tangent includes the
+   * derivative of the frame (the geometric terms).
    */
   template <int dim>
   class CohesiveInterfaces
@@ -45,7 +53,10 @@ namespace amfrac
     using Vector       = TrilinosWrappers::MPI::Vector;
     using Matrix       = TrilinosWrappers::SparseMatrix;
 
-    explicit CohesiveInterfaces(const parameters::CohesiveInterfaces &data);
+    /** @p deformed_frame: the local frame follows the deformed
+     * mid-surface (total Lagrangian kinematics; the Newton path only). */
+    explicit CohesiveInterfaces(const parameters::CohesiveInterfaces &data,
+                                const bool deformed_frame = false);
 
     /** Crack insertion: inserted faces get an extrinsic bilinear law of
      * penalty stiffness @p penalty (one more entry of ledger()) and, once
@@ -186,11 +197,13 @@ namespace amfrac
     /** Add K_T(solution) @p direction to @p product (a vector with
      * writable ghosts), with the tangent of the converged history; the
      * point states are not touched. */
-    /** Add to @p gradient the derivative of the integral of the normal
-     * opening over the points that are bonded in the converged state (the
-     * controlled quantity of opening control; linear in u). */
+    /** Add to @p gradient the derivative at @p solution (locally relevant
+     * entries) of the integral of the normal opening over the points that
+     * are bonded in the converged state (the controlled quantity of
+     * opening control; linear in u unless the frame follows the
+     * deformation). */
     void
-    add_opening_gradient(Vector &gradient) const;
+    add_opening_gradient(const Vector &solution, Vector &gradient) const;
 
     void
     add_tangent_product(const Vector &solution,
@@ -447,7 +460,11 @@ namespace amfrac
       FullMatrix<double>          shape;
       std::vector<double>         JxW;
       std::vector<Tensor<2, dim>> frame; ///< rows: normal, tangents
-      std::vector<Point<dim>>     points;
+      /** Deformed frame only: the derivative of the mid-surface
+       * displacement along the reference tangent a (frame row a + 1) at
+       * point q per unit value of local dof k: tangent_shape[a](q, k). */
+      std::array<FullMatrix<double>, dim - 1> tangent_shape;
+      std::vector<Point<dim>>                 points;
       /** The points in the lower cell's reference coordinates. */
       std::vector<Point<dim>> unit_points;
       std::vector<PointState> converged;
@@ -474,6 +491,7 @@ namespace amfrac
     std::vector<unsigned int> first_slot;
 
     const parameters::CohesiveInterfaces data;
+    const bool                           deformed_frame;
     /** Inserted crack faces, each from both sides; penalty of their law
      * (0: no crack insertion). */
     std::set<std::pair<CellId, unsigned int>>    cracked;
@@ -594,6 +612,27 @@ namespace amfrac
      * and the crack penalty. */
     cohesive::CamanhoDavilaProperties
     crack_law(const PointState &state) const;
+
+    /** Deformed frame: the frame of point @p q of @p element at its dof
+     * values @p u, the global gap there, and the derivatives
+     * B[k] = d (local gap) / d u_k. */
+    cohesive::DeformedFrame<dim>
+    deformed_kinematics(const Element                &element,
+                        const unsigned int            q,
+                        const dealii::Vector<double> &u,
+                        Tensor<1, dim>               &global_gap,
+                        std::vector<Tensor<1, dim>>  &B) const;
+
+    /** Deformed frame: the law at every point of @p element at its dof
+     * values @p u from the converged history; the forces into @p r, the
+     * consistent tangent (with the frame's derivatives) into @p K if
+     * given, the states into @p trial if given. */
+    void
+    deformed_element(const Element                &element,
+                     const dealii::Vector<double> &u,
+                     dealii::Vector<double>       &r,
+                     FullMatrix<double>           *K,
+                     std::vector<PointState>      *trial) const;
 
     /** The law at one point, with the work increment from the converged
      * state. */

@@ -1,0 +1,97 @@
+#pragma once
+
+// Two orthotropic plies (+30 / -30 degrees) on 2 x 1 (x 1) cells each,
+// the nodes on their interface duplicated: the small mesh of the unit tests
+// of the total Lagrangian plies and of the interfaces that follow them.
+
+#include <amfrac/assembly/elastic_assembler.h>
+#include <amfrac/dofs/tied_copy_dofs.h>
+#include <amfrac/material/orthotropic.h>
+#include <cmath>
+#include <deal.II/grid/grid_generator.h>
+#include <memory>
+#include <vector>
+
+namespace amfrac_test
+{
+  using namespace dealii;
+  using namespace amfrac;
+
+  inline SymmetricTensor<4, 3>
+  ply_stiffness(const double angle)
+  {
+    ElasticConstants c;
+    c.E1 = 135000, c.E2 = c.E3 = 10000;
+    c.G12 = c.G13 = 5000, c.G23 = 3500;
+    c.nu12 = c.nu13 = 0.3, c.nu23 = 0.4;
+    return rotate(stiffness_in_material_axes(c), ply_rotation(angle));
+  }
+
+  /** The 3D stiffness restricted to the (x, z) plane for dim = 2 (plane
+   * strain of the cross-section), unchanged for dim = 3. */
+  template <int dim>
+  SymmetricTensor<4, dim> restrict(const SymmetricTensor<4, 3> &C)
+  {
+    SymmetricTensor<4, dim> r;
+    const unsigned int      axis[3] = {0, dim == 2 ? 2u : 1u, 2};
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        for (unsigned int k = 0; k < dim; ++k)
+          for (unsigned int l = 0; l < dim; ++l)
+            r[i][j][k][l] = C[axis[i]][axis[j]][axis[k]][axis[l]];
+    return r;
+  }
+
+  /** Two plies (+30 / -30 degrees, elastic, or @p given) on 2 x 1 (x 1)
+   * cells each, the nodes on their interface duplicated. */
+  template <int dim>
+  struct TwoPlies
+  {
+    Triangulation<dim>                 tria;
+    std::vector<PlyProperties<dim>>    plies;
+    std::unique_ptr<TiedCopyDoFs<dim>> dofs;
+
+    explicit TwoPlies(const unsigned int                     degree,
+                      const std::vector<PlyProperties<dim>> &given = {})
+      : plies(given)
+    {
+      std::vector<unsigned int> cells(dim, 1);
+      cells[0]       = 2;
+      cells[dim - 1] = 2;
+      Point<dim> top;
+      for (unsigned int d = 0; d < dim; ++d)
+        top[d] = 1;
+      top[0] = 2;
+      GridGenerator::subdivided_hyper_rectangle(tria, cells, Point<dim>(), top);
+      for (const auto &cell : tria.active_cell_iterators())
+        cell->set_material_id(cell->center()[dim - 1] > 0.5 ? 1 : 0);
+      for (const double angle : {30., -30.})
+        if (given.empty())
+          {
+            PlyProperties<dim> ply;
+            ply.stiffness = restrict<dim>(ply_stiffness(angle));
+            ply.density   = 1.6e-9;
+            plies.push_back(ply);
+          }
+      dofs = std::make_unique<TiedCopyDoFs<dim>>(tria, degree);
+      dofs->distribute([](const auto &cell, const unsigned int f) {
+        return std::abs(cell->face(f)->center()[dim - 1] - 0.5) < 1e-12;
+      });
+    }
+  };
+
+  /** The rotation by @p angle about y in 3D (in the x-z plane, as the 2D
+   * cross-section). */
+  template <int dim>
+  Tensor<2, dim>
+  rotation(const double angle)
+  {
+    Tensor<2, dim>     R = unit_symmetric_tensor<dim>();
+    const unsigned int z = dim - 1;
+    R[0][0]              = std::cos(angle);
+    R[0][z]              = -std::sin(angle);
+    R[z][0]              = std::sin(angle);
+    R[z][z]              = std::cos(angle);
+    return R;
+  }
+} // namespace amfrac_test
