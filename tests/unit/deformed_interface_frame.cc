@@ -35,6 +35,8 @@ namespace
 {
   using Vector = TrilinosWrappers::MPI::Vector;
   using Matrix = TrilinosWrappers::SparseMatrix;
+  using amfrac_test::ghosted;
+  using amfrac_test::writable_ghosts;
 
   std::mt19937                           random_engine(11);
   std::uniform_real_distribution<double> uniform(-1, 1);
@@ -281,31 +283,6 @@ namespace
     return result;
   }
 
-  /** @p u with the locally relevant entries. */
-  template <int dim>
-  Vector
-  with_ghosts(const TiedCopyDoFs<dim> &dofs, const Vector &u)
-  {
-    Vector result(dofs.locally_owned_dofs(),
-                  dofs.locally_relevant_dofs(),
-                  MPI_COMM_WORLD);
-    result = u;
-    return result;
-  }
-
-  /** A zero vector whose ghost entries can be added to. */
-  template <int dim>
-  Vector
-  writable_ghosts(const TiedCopyDoFs<dim> &dofs)
-  {
-    Vector result;
-    result.reinit(dofs.locally_owned_dofs(),
-                  dofs.locally_relevant_dofs(),
-                  MPI_COMM_WORLD,
-                  true);
-    return result;
-  }
-
   template <int dim>
   struct Evaluation
   {
@@ -337,7 +314,7 @@ namespace
         pattern.compress();
         K->reinit(pattern);
       }
-    const Vector relevant = with_ghosts(dofs, u);
+    const Vector relevant = ghosted(dofs, u);
     Vector       force    = writable_ghosts(dofs);
     interfaces.assemble(relevant, force, none, K);
     force.compress(VectorOperation::add);
@@ -359,7 +336,7 @@ namespace
     CohesiveInterfaces<dim> interfaces(soft_interface(), true);
     interfaces.setup(dofs, "");
     Vector gradient = writable_ghosts(dofs);
-    interfaces.add_opening_gradient(with_ghosts(dofs, u), gradient);
+    interfaces.add_opening_gradient(ghosted(dofs, u), gradient);
     gradient.compress(VectorOperation::add);
     Vector result(dofs.locally_owned_dofs(), MPI_COMM_WORLD);
     result = gradient;
@@ -397,9 +374,7 @@ namespace
     CohesiveInterfaces<dim> interfaces(soft_interface(), true);
     interfaces.setup(dofs, "");
     Vector product = writable_ghosts(dofs);
-    interfaces.add_tangent_product(with_ghosts(dofs, u),
-                                   with_ghosts(dofs, d),
-                                   product);
+    interfaces.add_tangent_product(ghosted(dofs, u), ghosted(dofs, d), product);
     product.compress(VectorOperation::add);
     Vector difference(Kd);
     difference = product;
@@ -416,7 +391,7 @@ namespace
   {
     AffineConstraints<double> none;
     none.close();
-    const Vector            relevant = with_ghosts(dofs, u);
+    const Vector            relevant = ghosted(dofs, u);
     Vector                  force    = writable_ghosts(dofs);
     CohesiveInterfaces<dim> old(soft_interface(), true);
     old.setup(dofs, "");

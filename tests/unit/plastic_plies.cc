@@ -30,6 +30,8 @@ namespace
 {
   using Vector = TrilinosWrappers::MPI::Vector;
   using Matrix = TrilinosWrappers::SparseMatrix;
+  using amfrac_test::ghosted;
+  using amfrac_test::writable_ghosts;
 
   template <int dim>
   PlyProperties<dim>
@@ -88,32 +90,14 @@ namespace
   {
     AffineConstraints<double> none;
     none.close();
-    Vector relevant(dofs.locally_owned_dofs(),
-                    dofs.locally_relevant_dofs(),
-                    MPI_COMM_WORLD);
-    relevant = u;
-    Vector force;
-    force.reinit(dofs.locally_owned_dofs(),
-                 dofs.locally_relevant_dofs(),
-                 MPI_COMM_WORLD,
-                 true);
+    const Vector relevant = ghosted(dofs, u);
+    Vector       force    = writable_ghosts(dofs);
     if (tangent)
       tangent->copy_from(K);
     CHECK(plastic.add_correction(relevant, none, force, tangent));
     force.compress(VectorOperation::add);
     K.vmult(R, u);
     R += force;
-  }
-
-  template <int dim>
-  Vector
-  ghosted(const TiedCopyDoFs<dim> &dofs, const Vector &u)
-  {
-    Vector relevant(dofs.locally_owned_dofs(),
-                    dofs.locally_relevant_dofs(),
-                    MPI_COMM_WORLD);
-    relevant = u;
-    return relevant;
   }
 
   /** A uniaxial stretch along x of @p strain, plus a random part of
@@ -193,11 +177,7 @@ namespace
               << ", |FD - K_T d| = " << difference.l2_norm() << std::endl;
     CHECK(difference.l2_norm() < 1e-6 * KTd.l2_norm());
     // The tangent product is the same operator.
-    Vector product;
-    product.reinit(dofs.locally_owned_dofs(),
-                   dofs.locally_relevant_dofs(),
-                   MPI_COMM_WORLD,
-                   true);
+    Vector product = writable_ghosts(dofs);
     plastic.add_tangent_product(ghosted(dofs, u), ghosted(dofs, d), product);
     product.compress(VectorOperation::add);
     Vector Kd(u);

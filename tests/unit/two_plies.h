@@ -8,7 +8,9 @@
 #include <amfrac/dofs/tied_copy_dofs.h>
 #include <amfrac/material/orthotropic.h>
 #include <cmath>
+#include <deal.II/base/mpi.h>
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/lac/trilinos_vector.h>
 #include <memory>
 #include <vector>
 
@@ -79,6 +81,31 @@ namespace amfrac_test
       });
     }
   };
+
+  /** @p u with the locally relevant entries of @p dofs. */
+  template <int dim>
+  TrilinosWrappers::MPI::Vector
+  ghosted(const TiedCopyDoFs<dim> &dofs, const TrilinosWrappers::MPI::Vector &u)
+  {
+    TrilinosWrappers::MPI::Vector relevant(dofs.locally_owned_dofs(),
+                                           dofs.locally_relevant_dofs(),
+                                           MPI_COMM_WORLD);
+    relevant = u;
+    return relevant;
+  }
+
+  /** A zero vector of @p dofs whose ghost entries can be added to. */
+  template <int dim>
+  TrilinosWrappers::MPI::Vector
+  writable_ghosts(const TiedCopyDoFs<dim> &dofs)
+  {
+    TrilinosWrappers::MPI::Vector result;
+    result.reinit(dofs.locally_owned_dofs(),
+                  dofs.locally_relevant_dofs(),
+                  MPI_COMM_WORLD,
+                  true);
+    return result;
+  }
 
   /** The rotation by @p angle about y in 3D (in the x-z plane, as the 2D
    * cross-section). */
