@@ -1,4 +1,5 @@
 #include <amfrac/adaptivity/error_estimator.h>
+#include <amfrac/assembly/displacement_gradients.h>
 #include <amfrac/base/nearest_points.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -47,10 +48,12 @@ namespace amfrac
   ErrorEstimator<dim>::ErrorEstimator(
     const TiedCopyDoFs<dim>               &dofs,
     const std::vector<PlyProperties<dim>> &plies,
-    const FaceFilter                      &released)
+    const FaceFilter                      &released,
+    const bool                             finite_strain)
     : dofs(dofs)
     , plies(plies)
     , released(released)
+    , finite_strain(finite_strain)
     , comm(dofs.copy_handler().get_triangulation().get_communicator())
   {
     for (const auto &ply : plies)
@@ -84,9 +87,18 @@ namespace amfrac
     for (unsigned int i = 0; i < indices.size(); ++i)
       local[i] = u[indices[i]];
     stress.resize(values.n_quadrature_points);
+    const auto &C = plies[cell->material_id()].stiffness;
+    if (finite_strain)
+      {
+        std::vector<Tensor<2, dim>> gradients(values.n_quadrature_points);
+        values[FEValuesExtractors::Vector(0)]
+          .get_function_gradients_from_local_dof_values(local, gradients);
+        for (unsigned int q = 0; q < gradients.size(); ++q)
+          stress[q] = C * green_lagrange_strain(gradients[q]);
+        return;
+      }
     values[FEValuesExtractors::Vector(0)]
       .get_function_symmetric_gradients_from_local_dof_values(local, stress);
-    const auto &C = plies[cell->material_id()].stiffness;
     for (auto &s : stress)
       s = C * s;
   }

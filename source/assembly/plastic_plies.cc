@@ -107,10 +107,12 @@ namespace amfrac
 
   template <int dim>
   PlasticPlies<dim>::PlasticPlies(const TiedCopyDoFs<dim>               &dofs,
-                                  const std::vector<PlyProperties<dim>> &plies)
+                                  const std::vector<PlyProperties<dim>> &plies,
+                                  const bool finite_strain)
     : dofs(dofs)
     , plies(plies)
     , quadrature(dofs.cell_quadrature(dofs.get_fe().degree + 1))
+    , finite_strain(finite_strain)
   {
     for (const auto &ply : plies)
       strain_maps.push_back(strain_rotation(ply.rotation));
@@ -186,18 +188,93 @@ namespace amfrac
         local(k) = v(indices[k]);
     }
 
-    /** The strain of the local values @p u at every point of @p values. */
+    /** The displacement gradients of the local values @p u at every
+     * point of @p values and the strain: sym(grad u), or with @p finite
+     * the Green-Lagrange strain. */
     template <int dim>
     void
     strains(const FEValues<dim>                  &values,
             const dealii::Vector<double>         &u,
-            std::vector<SymmetricTensor<2, dim>> &result)
+            const bool                            finite,
+            std::vector<SymmetricTensor<2, dim>> &result,
+            std::vector<Tensor<2, dim>>          &gradients)
     {
-      static thread_local std::vector<Tensor<2, dim>> gradients;
       displacement_gradients(values, u, gradients);
       result.resize(gradients.size());
       for (unsigned int q = 0; q < gradients.size(); ++q)
-        result[q] = symmetrize(gradients[q]);
+        result[q] = strain_measure(gradients[q], finite);
+    }
+
+    /** The strain alone. */
+    template <int dim>
+    void
+    strains(const FEValues<dim>                  &values,
+            const dealii::Vector<double>         &u,
+            const bool                            finite,
+            std::vector<SymmetricTensor<2, dim>> &result)
+    {
+      static thread_local std::vector<Tensor<2, dim>> gradients;
+      strains(values, u, finite, result, gradients);
+    }
+
+    /** The returned @p stress (material-axes Voigt) less the elastic
+     * stress C @p strain of the total strain, in the model's axes. */
+    template <int dim>
+    SymmetricTensor<2, dim>
+    excess_stress(const Voigt                   &stress,
+                  const PlyProperties<dim>      &ply,
+                  const SymmetricTensor<2, dim> &strain)
+    {
+      return restrict_to_model<dim>(
+               to_laminate_tensor(stress, ply.rotation, 1.))
+             - ply.stiffness * strain;
+    }
+
+    /** The strain variation of every shape function at point @p q: the
+     * symmetric gradient, or with @p grad_u (finite strain) the variation
+     * of the Green-Lagrange strain sym(F^T grad phi_i). */
+    template <int dim>
+    void
+    strain_variations(const FEValues<dim>                  &values,
+                      const unsigned int                    q,
+                      const Tensor<2, dim>                 *grad_u,
+                      std::vector<SymmetricTensor<2, dim>> &result)
+    {
+      const FEValuesExtractors::Vector displacement(0);
+      const auto                      &fe = values.get_fe();
+      result.resize(fe.n_dofs_per_cell());
+      if (!grad_u)
+        {
+          for (unsigned int i = 0; i < result.size(); ++i)
+            result[i] = values[displacement].symmetric_gradient(i, q);
+          return;
+        }
+      const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + *grad_u;
+      for (unsigned int i = 0; i < result.size(); ++i)
+        result[i]
+          = symmetrize(outer_product(F[fe.system_to_component_index(i).first],
+                                     values.shape_grad(i, q)));
+    }
+
+    /** The geometric part of the finite-strain tangent of the stress
+     * @p excess (times JxW): grad phi_i . excess grad phi_j for shapes of
+     * the same component, added to @p K. */
+    template <int dim>
+    void
+    add_geometric_tangent(const FEValues<dim>           &values,
+                          const unsigned int             q,
+                          const SymmetricTensor<2, dim> &excess,
+                          FullMatrix<double>            &K)
+    {
+      const auto &fe = values.get_fe();
+      for (unsigned int i = 0; i < K.m(); ++i)
+        {
+          const Tensor<1, dim> S_g = excess * values.shape_grad(i, q);
+          for (unsigned int j = 0; j < K.n(); ++j)
+            if (fe.system_to_component_index(j).first
+                == fe.system_to_component_index(i).first)
+              K(i, j) += S_g * values.shape_grad(j, q);
+        }
     }
   } // namespace
 
@@ -213,72 +290,77 @@ namespace amfrac
     const bool                       return_map)
   {
     const unsigned int                   n = dofs.get_fe().n_dofs_per_cell();
-    const FEValuesExtractors::Vector     displacement(0);
     dealii::Vector<double>               u(n), f(n);
     FullMatrix<double>                   K(n, n);
     std::vector<SymmetricTensor<2, dim>> grads(n), eps;
+    std::vector<Tensor<2, dim>>          H;
     bool                                 converged = true, plastic = false;
     last_failure.clear();
-    for_each_plastic_cell(
-      [&](const auto &cell, const auto &indices, const auto &values) {
-        const auto &ply   = plies[cell->material_id()];
-        const auto &law   = *laws[cell->material_id()];
-        const auto &state = history[cell->active_cell_index()];
-        local_values(relevant_u, indices, u);
-        strains(values, u, eps);
-        const auto &T    = strain_maps[cell->material_id()];
-        f                = 0;
-        K                = 0;
-        bool any_tangent = false, any_force = false;
-        for (const unsigned int q : values.quadrature_point_indices())
-          {
-            const Voigt strain = to_material_voigt(eps[q], T);
-            auto        response
-              = return_map ?
-                  law.respond(strain, state[q]) :
-                  HoffmanPlasticity::Response{
-                    law.elastic_stress(strain, state[q]), {}, state[q]};
-            if (!response.plastic && virgin(state[q]))
-              continue;
-            if (!response.converged && converged)
-              {
-                converged = false;
-                std::ostringstream where;
-                where << "the Hoffman return mapping did not converge in ply "
-                      << cell->material_id() << " near (" << cell->center()
-                      << ")";
-                last_failure = where.str();
-              }
-            const SymmetricTensor<2, dim> excess
-              = restrict_to_model<dim>(
-                  to_laminate_tensor(response.stress, ply.rotation, 1.))
-                - ply.stiffness * eps[q];
-            const double JxW = values.JxW(q);
-            for (unsigned int i = 0; i < n; ++i)
-              grads[i] = values[displacement].symmetric_gradient(i, q);
-            for (unsigned int i = 0; i < n; ++i)
-              f(i) += excess * grads[i] * JxW;
-            any_force = true;
-            if (!tangent || !(response.plastic || response.on_surface))
-              continue;
-            plastic = any_tangent = true;
-            const SymmetricTensor<4, dim> difference
-              = tangent_in_model<dim>(response.tangent, ply.rotation)
-                - ply.stiffness;
-            for (unsigned int j = 0; j < n; ++j)
-              {
-                const SymmetricTensor<2, dim> column
-                  = difference * grads[j] * JxW;
-                for (unsigned int i = 0; i < n; ++i)
-                  K(i, j) += grads[i] * column;
-              }
-          }
-        if (any_force)
-          for (unsigned int k = 0; k < n; ++k)
-            force(indices[k]) += f(k);
-        if (any_tangent)
-          constraints.distribute_local_to_global(K, indices, *tangent);
-      });
+    for_each_plastic_cell([&](const auto &cell,
+                              const auto &indices,
+                              const auto &values) {
+      const auto &ply   = plies[cell->material_id()];
+      const auto &law   = *laws[cell->material_id()];
+      const auto &state = history[cell->active_cell_index()];
+      local_values(relevant_u, indices, u);
+      strains(values, u, finite_strain, eps, H);
+      const auto &T    = strain_maps[cell->material_id()];
+      f                = 0;
+      K                = 0;
+      bool any_tangent = false, any_force = false;
+      for (const unsigned int q : values.quadrature_point_indices())
+        {
+          const Voigt strain = to_material_voigt(eps[q], T);
+          auto        response
+            = return_map ?
+                law.respond(strain, state[q]) :
+                HoffmanPlasticity::Response{
+                  law.elastic_stress(strain, state[q]), {}, state[q]};
+          if (!response.plastic && virgin(state[q]))
+            continue;
+          if (!response.converged && converged)
+            {
+              converged = false;
+              std::ostringstream where;
+              where << "the Hoffman return mapping did not converge in ply "
+                    << cell->material_id() << " near (" << cell->center()
+                    << ")";
+              last_failure = where.str();
+            }
+          const SymmetricTensor<2, dim> excess
+            = excess_stress(response.stress, ply, eps[q]);
+          const double JxW = values.JxW(q);
+          strain_variations(values, q, finite_strain ? &H[q] : nullptr, grads);
+          for (unsigned int i = 0; i < n; ++i)
+            f(i) += excess * grads[i] * JxW;
+          any_force           = true;
+          const bool material = response.plastic || response.on_surface;
+          // With finite strain, the excess stress of a point that has
+          // yielded also has its geometric stiffness.
+          if (!tangent || !(material || finite_strain))
+            continue;
+          plastic = any_tangent = true;
+          if (finite_strain)
+            add_geometric_tangent(values, q, excess * JxW, K);
+          if (!material)
+            continue;
+          const SymmetricTensor<4, dim> difference
+            = tangent_in_model<dim>(response.tangent, ply.rotation)
+              - ply.stiffness;
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              const SymmetricTensor<2, dim> column
+                = difference * grads[j] * JxW;
+              for (unsigned int i = 0; i < n; ++i)
+                K(i, j) += grads[i] * column;
+            }
+        }
+      if (any_force)
+        for (unsigned int k = 0; k < n; ++k)
+          force(indices[k]) += f(k);
+      if (any_tangent)
+        constraints.distribute_local_to_global(K, indices, *tangent);
+    });
     if (tangent)
       {
         tangent->compress(VectorOperation::add);
@@ -296,35 +378,57 @@ namespace amfrac
                                          Vector       &product) const
   {
     const unsigned int                   n = dofs.get_fe().n_dofs_per_cell();
-    const FEValuesExtractors::Vector     displacement(0);
     dealii::Vector<double>               u(n), d(n);
-    std::vector<SymmetricTensor<2, dim>> eps, deps;
-    for_each_plastic_cell(
-      [&](const auto &cell, const auto &indices, const auto &values) {
-        const auto &ply   = plies[cell->material_id()];
-        const auto &law   = *laws[cell->material_id()];
-        const auto &state = history[cell->active_cell_index()];
-        local_values(relevant_u, indices, u);
-        local_values(relevant_direction, indices, d);
-        strains(values, u, eps);
-        strains(values, d, deps);
-        for (const unsigned int q : values.quadrature_point_indices())
-          {
-            const auto response
-              = law.respond(to_material_voigt(eps[q],
-                                              strain_maps[cell->material_id()]),
-                            state[q]);
-            if (!response.plastic && !response.on_surface)
-              continue;
-            const SymmetricTensor<2, dim> stress
-              = (tangent_in_model<dim>(response.tangent, ply.rotation)
-                 - ply.stiffness)
-                * deps[q] * values.JxW(q);
-            for (unsigned int i = 0; i < n; ++i)
-              product(indices[i])
-                += stress * values[displacement].symmetric_gradient(i, q);
-          }
-      });
+    std::vector<SymmetricTensor<2, dim>> eps, deps, grads;
+    std::vector<Tensor<2, dim>>          H, H_d;
+    for_each_plastic_cell([&](const auto &cell,
+                              const auto &indices,
+                              const auto &values) {
+      const auto &ply   = plies[cell->material_id()];
+      const auto &law   = *laws[cell->material_id()];
+      const auto &state = history[cell->active_cell_index()];
+      local_values(relevant_u, indices, u);
+      local_values(relevant_direction, indices, d);
+      strains(values, u, finite_strain, eps, H);
+      strains(values, d, false, deps, H_d);
+      for (const unsigned int q : values.quadrature_point_indices())
+        {
+          const auto response
+            = law.respond(to_material_voigt(eps[q],
+                                            strain_maps[cell->material_id()]),
+                          state[q]);
+          const bool material = response.plastic || response.on_surface;
+          if (!material && (!finite_strain || virgin(state[q])))
+            continue;
+          const double JxW = values.JxW(q);
+          strain_variations(values, q, finite_strain ? &H[q] : nullptr, grads);
+          // The variation of the strain along d: sym(grad d), or
+          // sym(F^T grad d) with finite strain.
+          const Tensor<2, dim>          F = unit_symmetric_tensor<dim>() + H[q];
+          const SymmetricTensor<2, dim> strain_rate
+            = finite_strain ? symmetrize(transpose(F) * H_d[q]) : deps[q];
+          SymmetricTensor<2, dim> stress;
+          if (material)
+            stress = (tangent_in_model<dim>(response.tangent, ply.rotation)
+                      - ply.stiffness)
+                     * strain_rate * JxW;
+          // The geometric part: grad phi_i . excess grad d_(c_i).
+          Tensor<2, dim> geometric;
+          if (finite_strain)
+            geometric
+              = H_d[q]
+                * Tensor<2, dim>(excess_stress(response.stress, ply, eps[q]))
+                * JxW;
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              product(indices[i]) += stress * grads[i];
+              if (finite_strain)
+                product(indices[i])
+                  += geometric[dofs.get_fe().system_to_component_index(i).first]
+                     * values.shape_grad(i, q);
+            }
+        }
+    });
   }
 
 
@@ -345,7 +449,7 @@ namespace amfrac
         const auto &T     = strain_maps[cell->material_id()];
         auto       &state = history[cell->active_cell_index()];
         local_values(relevant_u, indices, u);
-        strains(values, u, eps);
+        strains(values, u, finite_strain, eps);
         bool previous_known = false;
         for (const unsigned int q : values.quadrature_point_indices())
           {
@@ -358,7 +462,7 @@ namespace amfrac
             if (!previous_known)
               {
                 local_values(relevant_previous, indices, previous);
-                strains(values, previous, previous_eps);
+                strains(values, previous, finite_strain, previous_eps);
                 previous_known = true;
               }
             // sigma_n = C (eps_n - eps_p,n): the elastic response of the
@@ -396,7 +500,7 @@ namespace amfrac
         const auto &ply   = plies[cell->material_id()];
         const auto &state = history[cell->active_cell_index()];
         local_values(relevant_u, indices, u);
-        strains(values, u, eps);
+        strains(values, u, finite_strain, eps);
         for (const unsigned int q : values.quadrature_point_indices())
           {
             if (virgin(state[q]))

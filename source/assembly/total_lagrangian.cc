@@ -12,12 +12,10 @@ namespace amfrac
   FiniteStrainPoint<dim>::FiniteStrainPoint(const Tensor<2, dim> &grad_u,
                                             const SymmetricTensor<4, dim> &C)
   {
-    F = unit_symmetric_tensor<dim>() + grad_u;
-    // E = (H + H^T + H^T H) / 2 without forming F^T F - I, which would
-    // lose the small strains of a stiff ply to cancellation.
-    E = symmetrize(grad_u) + 0.5 * symmetrize(transpose(grad_u) * grad_u);
-    S = C * E;
-    P = F * Tensor<2, dim>(S);
+    F              = unit_symmetric_tensor<dim>() + grad_u;
+    E              = green_lagrange_strain(grad_u);
+    S              = C * E;
+    P              = F * Tensor<2, dim>(S);
     energy_density = 0.5 * (E * S);
   }
 

@@ -363,7 +363,9 @@ namespace amfrac
         "(so tension and compression yield at different stresses), "
         "associative flow, isotropic hardening by Hardening, a backward-"
         "Euler return mapping with its consistent tangent on the static "
-        "Newton path. A plastic ply pays for a return mapping at every "
+        "Newton path (with Kinematics = total Lagrangian, of the second "
+        "Piola-Kirchhoff stress and the Green-Lagrange strain). A plastic "
+        "ply pays for a return mapping at every "
         "quadrature point and iteration; elastic plies pay nothing.");
       prm.declare_entry("Hardening",
                         "0",
@@ -1537,8 +1539,11 @@ namespace amfrac
         "solved by Newton-Raphson with the consistent tangent (material and "
         "geometric stiffness), with or without cohesive interfaces. Loads "
         "are dead loads on the undeformed configuration (a pressure keeps "
-        "its initial direction); the field output's stress and strain are "
-        "the small-strain ones of the displacement.");
+        "its initial direction); the field output and the point values "
+        "give the Green-Lagrange strain and the second Piola-Kirchhoff "
+        "stress. Plastic plies (Materials/Plasticity) return S to the "
+        "Hoffman surface with E = E_e + E_p (large rotations, small "
+        "strains).");
       Geometry::declare_parameters(prm);
       Materials::declare_parameters(prm);
       Discretization::declare_parameters(prm);
@@ -1995,8 +2000,8 @@ namespace amfrac
       const auto refuse = [&](const bool condition, const std::string &what) {
         if (condition)
           throw InputError("Materials/Plasticity",
-                           "plastic plies run on the static small-strain "
-                           "Newton path so far; they cannot be combined "
+                           "plastic plies run on the static Newton path "
+                           "so far; they cannot be combined "
                            "with "
                              + what);
       };
@@ -2006,7 +2011,6 @@ namespace amfrac
       refuse(geometry.in_plane,
              "Geometry/2D model = in-plane (a laminate homogenized "
              "through its thickness has no plies to yield)");
-      refuse(total_lagrangian, "Kinematics = total Lagrangian");
       refuse(cracks.active,
              "Crack insertion/Criterion (the same Hoffman surface would "
              "be the yield surface and the crack criterion)");

@@ -1,3 +1,4 @@
+#include <amfrac/assembly/displacement_gradients.h>
 #include <amfrac/postprocess/atomic_file.h>
 #include <amfrac/postprocess/field_output.h>
 #include <amfrac/postprocess/vtu_series.h>
@@ -22,8 +23,10 @@ namespace amfrac
 
   template <int dim>
   StressPostprocessor<dim>::StressPostprocessor(
-    const std::vector<PlyProperties<dim>> &plies)
+    const std::vector<PlyProperties<dim>> &plies,
+    const bool                             finite_strain)
     : plies(plies)
+    , finite_strain(finite_strain)
   {}
 
 
@@ -81,7 +84,8 @@ namespace amfrac
         Tensor<2, dim> gradient;
         for (unsigned int d = 0; d < dim; ++d)
           gradient[d] = inputs.solution_gradients[q][d];
-        const SymmetricTensor<2, dim> strain = symmetrize(gradient);
+        const SymmetricTensor<2, dim> strain
+          = strain_measure(gradient, finite_strain);
         const PlyStress stress = evaluate_ply_stress(ply, strain, plastic);
         SymmetricTensor<2, 3> strain_3d;
         for (unsigned int a = 0; a < dim; ++a)
@@ -103,10 +107,11 @@ namespace amfrac
   template <int dim>
   FieldOutput<dim>::FieldOutput(const parameters::Output &parameters,
                                 const TiedCopyDoFs<dim>  &dofs,
-                                const std::vector<PlyProperties<dim>> &plies)
+                                const std::vector<PlyProperties<dim>> &plies,
+                                const bool finite_strain)
     : parameters(parameters)
     , dofs(dofs)
-    , postprocessor(plies)
+    , postprocessor(plies, finite_strain)
   {}
 
 

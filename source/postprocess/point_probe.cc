@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <amfrac/adaptivity/mesh_transfer.h>
+#include <amfrac/assembly/displacement_gradients.h>
 #include <amfrac/base/reference_cells.h>
 #include <amfrac/postprocess/point_probe.h>
 #include <deal.II/base/mpi.h>
@@ -14,9 +15,11 @@ namespace amfrac
   template <int dim>
   PointProbe<dim>::PointProbe(const TiedCopyDoFs<dim>               &dofs,
                               const std::vector<PlyProperties<dim>> &plies,
-                              const std::vector<Point<dim>>         &points)
+                              const std::vector<Point<dim>>         &points,
+                              const bool finite_strain)
     : dofs(dofs)
     , plies(plies)
+    , finite_strain(finite_strain)
   {
     // deal.II 9.4's search tests the unit cube, which is wrong for a wedge
     // (inside_reference_cell()): on wedges the transfer's locator searches.
@@ -96,7 +99,7 @@ namespace amfrac
             values[k].stress
               = evaluate_ply_stress(
                   plies[cells[k]->material_id()],
-                  symmetrize(grad[0]),
+                  strain_measure(grad[0], finite_strain),
                   plastic_strain.empty() ?
                     nullptr :
                     &plastic_strain[cells[k]->active_cell_index()])

@@ -301,7 +301,10 @@ namespace amfrac
   ErrorEstimator<dim>
   Simulator<dim>::error_estimator() const
   {
-    return ErrorEstimator<dim>(dof_layer, plies, released_faces());
+    return ErrorEstimator<dim>(dof_layer,
+                               plies,
+                               released_faces(),
+                               parameters.total_lagrangian);
   }
 
 

@@ -124,6 +124,9 @@ namespace amfrac
     if (plasticity)
       newton->plastic_force.reinit(owned, relevant, comm, true);
     relevant_solution.reinit(owned, relevant, comm);
+    auto hanging = std::make_unique<HangingCondensation<dim>>(dof_layer, comm);
+    if (!hanging->empty())
+      newton->hanging = std::move(hanging);
   }
 
 
@@ -305,7 +308,13 @@ namespace amfrac
   double
   Simulator<dim>::condense_residual()
   {
-    NewtonState &n         = *newton;
+    NewtonState &n = *newton;
+    // A hanging dof next to a support hands part of its residual to the
+    // supported dof (increment_constraints resolve that chain, so
+    // condense() cannot): without it the reactions and the external work
+    // miss that part.
+    if (n.hanging)
+      n.hanging->condense(n.residual);
     const double reactions = condense(n.residual, n.condensed_residual);
     n.force_scale
       = std::sqrt(reactions + std::pow(n.external_load.l2_norm(), 2));
@@ -1017,20 +1026,23 @@ namespace amfrac
   double
   Simulator<dim>::bulk_strain_energy(const Vector &u) const
   {
-    // A total Lagrangian run has it from its last residual, which every
-    // caller has just evaluated at u.
-    if (finite_strain)
-      return newton->strain_energy;
-    Vector Ku = u;
-    newton->bulk_unconstrained.vmult(Ku, u);
+    // A total Lagrangian run has int E : C : E / 2 from its last residual,
+    // which every caller has just evaluated at u.
+    double elastic = newton->strain_energy;
+    if (!finite_strain)
+      {
+        Vector Ku = u;
+        newton->bulk_unconstrained.vmult(Ku, u);
+        elastic = 0.5 * (Ku * u);
+      }
     if (!plasticity)
-      return 0.5 * (Ku * u);
+      return elastic;
     // The plastic strain takes its part out of the stored energy.
     Vector relevant(dof_layer.locally_owned_dofs(),
                     dof_layer.locally_relevant_dofs(),
                     comm);
     relevant = u;
-    return 0.5 * (Ku * u) + plasticity->stored_energy_correction(relevant);
+    return elastic + plasticity->stored_energy_correction(relevant);
   }
 
 

@@ -106,7 +106,10 @@ namespace amfrac
     dof_layer.distribute(released_faces());
     if (parameters.plastic_plies)
       {
-        plasticity = std::make_unique<PlasticPlies<dim>>(dof_layer, plies);
+        plasticity
+          = std::make_unique<PlasticPlies<dim>>(dof_layer,
+                                                plies,
+                                                parameters.total_lagrangian);
         plasticity->setup();
       }
     // The lever couples distant nodes: every rank sees all of them.
@@ -131,9 +134,8 @@ namespace amfrac
       = std::make_unique<History>(parameters.output.directory + "/history.csv",
                                   Utilities::MPI::this_mpi_process(comm) == 0);
     if (parameters.output.write_vtu || parameters.output.write_xdmf)
-      field_output = std::make_unique<FieldOutput<dim>>(parameters.output,
-                                                        dof_layer,
-                                                        plies);
+      field_output = std::make_unique<FieldOutput<dim>>(
+        parameters.output, dof_layer, plies, parameters.total_lagrangian);
     if (parameters.output.write_vtu && interfaces)
       interface_output
         = std::make_unique<InterfaceOutput<dim>>(parameters.output, comm);
@@ -155,7 +157,10 @@ namespace amfrac
       }
     try
       {
-        probe = std::make_unique<PointProbe<dim>>(dof_layer, plies, points);
+        probe = std::make_unique<PointProbe<dim>>(dof_layer,
+                                                  plies,
+                                                  points,
+                                                  parameters.total_lagrangian);
       }
     catch (const std::invalid_argument &e)
       {

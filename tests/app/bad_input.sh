@@ -899,9 +899,6 @@ $plastic
 subsection Output
   set Directory = out
 end"
-expect plastic_total_lagrangian "Materials/Plasticity" "$base
-$plastic
-set Kinematics = total Lagrangian"
 expect plastic_cracks "Materials/Plasticity" "$base
 $plastic
 subsection Crack insertion

@@ -11,6 +11,14 @@
 //                   every direction yields at its strength (1e-6); the
 //                   plastic work closes the energy balance (1e-6 of the
 //                   work);
+//   uniaxial D S H total-Lagrangian
+//                   the same with Kinematics = total Lagrangian: the law
+//                   acts on the Green-Lagrange strain E = (l^2 - 1) / 2 of
+//                   the stretch l and gives the second Piola-Kirchhoff
+//                   stress S(E) of the same curve; the force is the first
+//                   Piola-Kirchhoff stress l S(E) (1e-6), and the balance
+//                   closes with the plastic work of S and E up to the
+//                   known difference of the two trapezoidal rules;
 //   cycle           load, unload and reload the 90 degree cube: unloading
 //                   is elastic with the elastic stiffness and no point
 //                   yields, reloading is elastic up to the force reached
@@ -103,7 +111,8 @@ namespace
   uniaxial(const std::string &file,
            const unsigned int d,
            const bool         tensile,
-           const double       hardening)
+           const double       hardening,
+           const bool         finite_strain)
   {
     const double strain = tensile ? 0.03 : -0.03;
     // 2 to 3 times the yield strain along the fibres, 2.5 to 10 times
@@ -114,21 +123,38 @@ namespace
              << "subsection Materials\n set Hardening = " << hardening
              << "\nend\nsubsection Output\n set Directory = "
              << "output-plastic-uniaxial-" << d << tensile << hardening
-             << "\nend\n";
+             << finite_strain << "\nend\n";
+    if (finite_strain)
+      appended << "set Kinematics = total Lagrangian\n";
     const auto        run   = run_scene<3>(file, appended.str());
     const History    &h     = run->history();
     const std::string force = d == 2 ? "reaction_z+_z" : "reaction_x+_x";
     unsigned int      plastic_steps = 0;
+    // The external work's trapezoidal rule on P = l S against the internal
+    // one on S and E = (l^2 - 1) / 2 differ by dl^2 dS / 4 per step (zero
+    // for small strains): the balance error to expect.
+    double previous_stretch = 1, previous_S = 0, discrepancy = 0;
     for (std::size_t r = 0; r < h.n_rows(); ++r)
       {
-        const double eps      = std::abs(amplitude) * h.value(r, "time");
-        const double expected = uniaxial_stress(d, tensile, hardening, eps);
+        // The stretch, and the strain the law sees (small or
+        // Green-Lagrange).
+        const double stretch = 1 + amplitude * h.value(r, "time");
+        const double eps
+          = std::abs(finite_strain ? (stretch * stretch - 1) / 2 : stretch - 1);
+        const double stress = uniaxial_stress(d, tensile, hardening, eps);
+        // P = F S on the reference area.
+        const double expected = finite_strain ? stretch * stress : stress;
         CHECK_CLOSE(std::abs(h.value(r, force)) / expected, 1., 1e-6);
         CHECK(h.value(r, force) * amplitude > 0);
         const bool yielding = h.value(r, "yielding_points") > 0;
         plastic_steps += yielding;
-        CHECK(yielding == (E[d] * eps > expected * (1 + 1e-9)));
-        CHECK(std::abs(h.value(r, "balance_error"))
+        CHECK(yielding == (E[d] * eps > stress * (1 + 1e-9)));
+        const double S = tensile ? stress : -stress;
+        if (finite_strain)
+          discrepancy
+            += std::pow(stretch - previous_stretch, 2) * (S - previous_S) / 4;
+        previous_stretch = stretch, previous_S = S;
+        CHECK(std::abs(h.value(r, "balance_error") - discrepancy)
               <= 1e-6 * h.value(r, "external_work"));
       }
     CHECK(plastic_steps >= 5);
@@ -346,11 +372,12 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const std::string                what = argc > 1 ? argv[1] : "";
-  if (what == "uniaxial" && argc == 6)
+  if (what == "uniaxial" && (argc == 6 || argc == 7))
     uniaxial(argv[2],
              std::stoi(argv[3]) - 1,
              std::string(argv[4]) == "t",
-             std::stod(argv[5]));
+             std::stod(argv[5]),
+             argc == 7 && std::string(argv[6]) == "total-Lagrangian");
   else if (what == "cycle" && argc == 3)
     cycle(argv[2]);
   else if (what == "beam" && argc == 3)
@@ -361,7 +388,8 @@ main(int argc, char **argv)
     elastic_identity(argv[2], argv[3]);
   else
     {
-      std::cerr << "usage: app_plasticity uniaxial FILE D t|c H | cycle FILE "
+      std::cerr << "usage: app_plasticity uniaxial FILE D t|c H "
+                   "[total-Lagrangian] | cycle FILE "
                    "| rotated FILE | beam FILE | identity DCB SHORT"
                 << std::endl;
       return 2;

@@ -1,10 +1,11 @@
 // Kinematics = total Lagrangian on the Newton path.
 //   rotation <euler_strip_2d.prm>: one end of the strip turned by 90
 //     degrees as a rigid body, the rest free: the whole strip turns rigidly
-//     (every probe on R X - X), no strain energy, no reaction; in 2D and in
-//     3D (a [0/90] plate with a cohesive interface between the plies). With
-//     small strains the same motion stores a large strain energy, which the
-//     test also checks (it is what the test could catch).
+//     (every probe on R X - X), no strain energy, no reaction, no output
+//     stress at the probe; in 2D and in 3D (a [0/90] plate with a cohesive
+//     interface between the plies). With small strains the same motion
+//     stores a large strain energy, which the test also checks (it is what
+//     the test could catch).
 //   rotation_sliding <euler_strip_2d.prm>: a cantilever of four plies with
 //     soft, elastic cohesive interfaces (shear stiffer than normal: a frame
 //     that mixes the modes changes their energy), its tip deflected after
@@ -12,7 +13,9 @@
 //     slide, and the two runs store the same energy in the plies and in
 //     the interfaces and need the same force, to the Newton tolerance
 //     (the interfaces' frame follows the deformed mid-surface; in the
-//     undeformed frame the turned run's stored interface energy differs).
+//     undeformed frame the turned run's stored interface energy differs),
+//     and the probe's output stress (second Piola-Kirchhoff) is the same
+//     (a small-strain stress of the turned run is not).
 //   euler <euler_strip_2d.prm>: the clamped strip with a first-mode
 //     imperfection w0 bends over at the critical force N_1 of the linear
 //     buckling analysis of the same mesh: past the bifurcation N follows the
@@ -21,6 +24,20 @@
 //     strain energy.
 //   euler_mode <euler_strip_2d.prm>: the same with the imperfection seeded
 //     from the computed first buckling mode (Geometry/Imperfection mode).
+//   plastic_strip <plastic_strip_2d.prm>: the clamped [90_4] strip with
+//     Hoffman plasticity compressed far past buckling, against the same
+//     strip with elastic plies: the two runs agree bit for bit up to the
+//     first yield, which comes after buckling; at the full shortening the
+//     plastic strip carries less than 0.85 times the elastic force and
+//     less than at its first yield, and its end force and plastic work lie
+//     within 0.2 % of those of a mesh four times finer; kappa never
+//     decreases, a fifth of the work or more is plastic, and the energy
+//     balances.
+//   plastic_strip_adaptive <plastic_strip_2d.prm>: the same on 50
+//     elements adapted every 8 steps (ZZ of the second Piola-Kirchhoff
+//     stress): kappa never lowered by a mesh change, the end force and
+//     plastic work within 0.5 % and 1 % of the 400-element mesh with fewer
+//     cells, the balance.
 //   panel <delaminated_panel.prm>: the seed's panel with total Lagrangian
 //     kinematics and contact, under displacement control to 0.21 mm: local
 //     buckling of the sublaminate where the linear analysis' load and the
@@ -94,6 +111,15 @@ namespace
     CHECK_CLOSE(history.value(last, "p0_ux"), -20 + 0.5, 1e-5);
     CHECK_CLOSE(history.value(last, z), -20 - 0.5, 1e-5);
     CHECK(std::abs(energy) < 1e-9);
+    // The probe's second Piola-Kirchhoff stress vanishes too.
+    double stress = 0;
+    for (const char *pair : {"xx", "yy", "zz", "yz", "xz", "xy"})
+      stress
+        = std::max(stress,
+                   std::abs(
+                     history.value(last, "p0_stress_" + std::string(pair))));
+    std::cout << "  largest probe stress " << stress << " MPa" << std::endl;
+    CHECK(stress < 1e-6);
     for (const std::string component : {"x", "y", "z"})
       if (component != "z" || dim == 3)
         CHECK(std::abs(history.value(last, "reaction_x-_" + component)) < 1e-6);
@@ -124,7 +150,7 @@ namespace
          << a << "*(y+" << s << ") - y\n end\nend\n"
          << "subsection Time\n set End time = 2\n set Number of steps = 24\n"
             "end\nsubsection Output\n set Field format = none\n"
-            " set Point values =\nend\n";
+            " set Point values = 10, 0.3\nend\n";
     return text.str();
   }
 
@@ -143,6 +169,10 @@ namespace
         results.push_back({h.value(last, "strain_energy"),
                            h.value(last, "interface_stored"),
                            force});
+        // The probe's stress (second Piola-Kirchhoff: the same in both).
+        for (const char *pair : {"xx", "yy", "zz", "yz", "xz", "xy"})
+          results.back().push_back(
+            h.value(last, "p0_stress_" + std::string(pair)));
         std::cout << "  turned by " << degrees << " degrees: strain energy "
                   << results.back()[0] << ", interfaces " << results.back()[1]
                   << " N mm/mm, tip force " << force << " N/mm" << std::endl;
@@ -152,6 +182,17 @@ namespace
     CHECK(results[0][1] > 0.02 * results[0][0]);
     for (unsigned int i = 0; i < 3; ++i)
       CHECK_CLOSE(results[1][i] / results[0][i], 1., 1e-6);
+    double stress = 0, difference = 0;
+    for (unsigned int i = 3; i < results[0].size(); ++i)
+      {
+        stress = std::max(stress, std::abs(results[0][i]));
+        difference
+          = std::max(difference, std::abs(results[1][i] - results[0][i]));
+      }
+    std::cout << "  probe stress: largest " << stress
+              << " MPa, turned run differs by " << difference << std::endl;
+    CHECK(stress > 1);
+    CHECK(difference < 1e-6 * stress);
   }
 
   void
@@ -307,6 +348,96 @@ namespace
     CHECK(fracture > 0.3 && fracture < 0.8);
     CHECK(balance < 5e-3);
   }
+
+  /** The plastic strip (prm/plastic_strip_2d.prm) against the same strip
+   * with elastic plies. */
+  void
+  plastic_strip(const std::string &file)
+  {
+    const std::string output
+      = "subsection Output\n set Directory = output-plastic-strip\nend\n";
+    const auto plastic = amfrac_test::run_scene<2>(file, output);
+    const auto elastic = amfrac_test::run_scene<2>(
+      file, output + "subsection Materials\n set Plasticity = none\nend\n");
+    const History &p = plastic->history(), &e = elastic->history();
+    // Identical, bit for bit, up to the first yield (elastic plies pay
+    // nothing: points that never yielded are not visited).
+    std::size_t first = 0;
+    while (first < p.n_rows() && p.value(first, "yielding_points") == 0)
+      {
+        for (const auto &column : e.column_names())
+          CHECK(p.value(first, column) == e.value(first, column));
+        ++first;
+      }
+    const std::size_t last = p.n_rows() - 1;
+    const auto        N    = [](const History &h, const std::size_t r) {
+      return -h.value(r, "reaction_x+_x");
+    };
+    // Both end at the full shortening: the plastic strip carries less.
+    CHECK(p.value(last, "time") == 1 && e.value(e.n_rows() - 1, "time") == 1);
+    const double ratio = N(p, last) / N(e, e.n_rows() - 1);
+    std::cout << "  first yield at step " << first + 1
+              << " (t = " << p.value(first, "time") << "), N = " << N(p, first)
+              << " N/mm; at the end N = " << N(p, last) << " N/mm against "
+              << N(e, e.n_rows() - 1) << " N/mm elastic (ratio " << ratio
+              << "), plastic work " << p.value(last, "plastic_work") << " of "
+              << p.value(last, "external_work") << " N mm/mm" << std::endl;
+    // It yields after buckling (the membrane stress is far below the
+    // strengths), at some 5 mm of deflection.
+    CHECK(first > 10 && first < last - 10);
+    CHECK(p.value(first, "p0_uy") > 3);
+    CHECK(ratio < 0.85);
+    // The end force and plastic work of 400 elements along the length
+    // (the scene has 100; 2026-12-03: 2.5452 N/mm, 3.6720 N mm/mm).
+    CHECK(std::abs(N(p, last) / 2.5452 - 1) < 2e-3);
+    CHECK(std::abs(p.value(last, "plastic_work") / 3.6720 - 1) < 2e-3);
+    CHECK(N(p, last) < N(p, first));
+    for (std::size_t r = 1; r <= last; ++r)
+      CHECK(p.value(r, "max_equivalent_plastic_strain")
+            >= p.value(r - 1, "max_equivalent_plastic_strain"));
+    // A fifth of the work or more goes into plastic flow, and the balance
+    // closes (to the trapezoidal rule's error on the nonlinear path, as in
+    // the elastic run).
+    CHECK(p.value(last, "plastic_work") > 0.2 * p.value(last, "external_work"));
+    CHECK(amfrac_test::largest(p, "balance_error")
+          < 1e-4 * p.value(last, "external_work"));
+  }
+
+  /** The plastic strip on a coarse mesh adapted during the load history
+   * (ZZ of S, every 8 steps): the plastic history moves to each new mesh
+   * (tau_1), kappa is never lowered, and the end force and plastic work
+   * approach those of the uniform 400-element mesh with fewer cells. */
+  void
+  plastic_strip_adaptive(const std::string &file)
+  {
+    const auto run = amfrac_test::run_scene<2>(
+      file,
+      "subsection Geometry\n set Elements along length = 50\nend\n"
+      "subsection Adaptivity\n set Refine every = 8\n"
+      " set Refine fraction = 0.3\n set Maximum refinement level = 2\nend\n"
+      "subsection Output\n set Directory = output-plastic-strip-adaptive\n"
+      "end\n");
+    const History    &h       = run->history();
+    const History    *changes = run->adaptivity_history();
+    const std::size_t last    = h.n_rows() - 1;
+    CHECK(changes && changes->n_rows() >= 5);
+    for (std::size_t r = 0; changes && r < changes->n_rows(); ++r)
+      CHECK(changes->value(r, "max_equivalent_plastic_strain_after")
+            == changes->value(r, "max_equivalent_plastic_strain_before"));
+    const double cells
+      = changes ? changes->value(changes->n_rows() - 1, "cells") : 0;
+    const double force = -h.value(last, "reaction_x+_x");
+    const double work  = h.value(last, "plastic_work");
+    std::cout << "  adaptive: " << cells << " cells at the end, N = " << force
+              << " N/mm, plastic work " << work << " N mm/mm, balance "
+              << amfrac_test::largest(h, "balance_error") << std::endl;
+    // The uniform 400-element mesh has 1,600 cells (plastic_strip).
+    CHECK(cells < 1600);
+    CHECK(std::abs(force / 2.5452 - 1) < 5e-3);
+    CHECK(std::abs(work / 3.6720 - 1) < 1e-2);
+    CHECK(amfrac_test::largest(h, "balance_error")
+          < 1e-4 * h.value(last, "external_work"));
+  }
 } // namespace
 
 int
@@ -324,6 +455,10 @@ main(int argc, char *argv[])
     panel(argv[2]);
   else if (what == "panel_growth")
     panel_growth(argv[2]);
+  else if (what == "plastic_strip")
+    plastic_strip(argv[2]);
+  else if (what == "plastic_strip_adaptive")
+    plastic_strip_adaptive(argv[2]);
   else if (what == "euler_mode")
     // The first buckling mode instead of its formula, with the same
     // largest displacement.

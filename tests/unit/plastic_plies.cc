@@ -33,35 +33,14 @@ namespace
   using amfrac_test::ghosted;
   using amfrac_test::writable_ghosts;
 
-  template <int dim>
-  PlyProperties<dim>
-  ply(const double angle, const bool plastic)
-  {
-    ElasticConstants c;
-    c.E1 = 135000, c.E2 = c.E3 = 10000;
-    c.G12 = c.G13 = 5000, c.G23 = 3500;
-    c.nu12 = c.nu13 = 0.3, c.nu23 = 0.4;
-    PlyProperties<dim> p;
-    p.rotation     = ply_rotation(angle);
-    p.stiffness_3d = rotate(stiffness_in_material_axes(c), p.rotation);
-    p.stiffness    = restrict_to_model<dim>(p.stiffness_3d);
-    p.strengths.Xt = 1500, p.strengths.Xc = 1200;
-    p.strengths.Yt = 50, p.strengths.Yc = 200;
-    p.strengths.Zt = 45, p.strengths.Zc = 180;
-    p.strengths.S12 = 70, p.strengths.S13 = 75, p.strengths.S23 = 40;
-    p.density   = 1.6e-9;
-    p.plastic   = plastic;
-    p.hardening = 2;
-    return p;
-  }
-
   /** The two plies of the tests, the lower one plastic. */
   template <int dim>
   struct TwoPlies : amfrac_test::TwoPlies<dim>
   {
     explicit TwoPlies(const unsigned int degree)
       : amfrac_test::TwoPlies<dim>(degree,
-                                   {ply<dim>(30, true), ply<dim>(-30, false)})
+                                   {amfrac_test::plastic_ply<dim>(30, true),
+                                    amfrac_test::plastic_ply<dim>(-30, false)})
     {}
   };
 

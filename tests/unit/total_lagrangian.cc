@@ -8,10 +8,15 @@
 //     Q1 and Q2 meshes of two orthotropic plies at +-30 degrees whose
 //     interface nodes are duplicated), and the tangent is symmetric;
 //   - for small displacements the internal force is K u of small-strain
-//     elasticity.
+//     elasticity;
+//   - the Zienkiewicz-Zhu estimate of a total Lagrangian run (stress S of
+//     the Green-Lagrange strain) is objective: a non-uniform state turned
+//     by 60 degrees has the same cell errors and norm to round-off, where
+//     the small-strain estimate of the turned state changes.
 #include "../check.h"
 #include "two_plies.h"
 
+#include <amfrac/adaptivity/error_estimator.h>
 #include <amfrac/assembly/elastic_assembler.h>
 #include <amfrac/assembly/total_lagrangian.h>
 #include <amfrac/material/orthotropic.h>
@@ -152,6 +157,50 @@ namespace
     f -= Ku;
     CHECK(f.l2_norm() < 1e-5 * Ku.l2_norm());
   }
+
+  template <int dim>
+  void
+  check_estimator_objectivity()
+  {
+    TwoPlies<dim>            mesh(2);
+    const TiedCopyDoFs<dim> &dofs = *mesh.dofs;
+    // The interface of TwoPlies: the recovery is ply by ply.
+    const auto interface = [](const auto &cell, const unsigned int f) {
+      return std::abs(cell->face(f)->center()[dim - 1] - 0.5) < 1e-12;
+    };
+    const Tensor<2, dim> R = rotation<dim>(std::acos(0.5));
+    Vector state(dofs.locally_owned_dofs(), MPI_COMM_WORLD), turned(state);
+    for (const auto i : dofs.locally_owned_dofs())
+      {
+        const Point<dim>  &X = dofs.support_point(i);
+        const unsigned int c = dofs.component(i);
+        // A few percent of non-uniform strain.
+        Point<dim> x = X;
+        for (unsigned int k = 0; k < dim; ++k)
+          x[k] += 0.02 * std::sin(2 * X[0] + k + 3 * X[dim - 1]);
+        state(i)  = x[c] - X[c];
+        turned(i) = (R * x)[c] - X[c];
+      }
+    state.compress(VectorOperation::insert);
+    turned.compress(VectorOperation::insert);
+    const auto estimate = [&](const Vector &u, const bool finite_strain) {
+      return ErrorEstimator<dim>(dofs, mesh.plies, interface, finite_strain)
+        .zienkiewicz_zhu(dofs.replicate(u));
+    };
+    const auto before = estimate(state, true), after = estimate(turned, true);
+    CHECK(before.error > 0);
+    CHECK_CLOSE(after.error / before.error, 1., 1e-10);
+    CHECK_CLOSE(after.solution_norm / before.solution_norm, 1., 1e-10);
+    for (unsigned int c = 0; c < before.cell_errors.size(); ++c)
+      CHECK(std::abs(after.cell_errors[c] - before.cell_errors[c])
+            <= 1e-5 * before.error);
+    const auto small = estimate(turned, false);
+    std::cout << "  dim " << dim << ": ZZ error " << before.error
+              << ", turned by 60 degrees " << after.error
+              << "; small-strain estimate of the turned state " << small.error
+              << std::endl;
+    CHECK(std::abs(small.error / before.error - 1) > 0.01);
+  }
 } // namespace
 
 int
@@ -167,5 +216,7 @@ main(int argc, char *argv[])
     }
   check_small_strain_limit<2>();
   check_small_strain_limit<3>();
+  check_estimator_objectivity<2>();
+  check_estimator_objectivity<3>();
   return amfrac_test::failures;
 }

@@ -19,14 +19,43 @@ namespace amfrac_test
   using namespace dealii;
   using namespace amfrac;
 
-  inline SymmetricTensor<4, 3>
-  ply_stiffness(const double angle)
+  /** The carbon/epoxy of the two plies (MPa). */
+  inline ElasticConstants
+  ply_material()
   {
     ElasticConstants c;
     c.E1 = 135000, c.E2 = c.E3 = 10000;
     c.G12 = c.G13 = 5000, c.G23 = 3500;
     c.nu12 = c.nu13 = 0.3, c.nu23 = 0.4;
-    return rotate(stiffness_in_material_axes(c), ply_rotation(angle));
+    return c;
+  }
+
+  inline SymmetricTensor<4, 3>
+  ply_stiffness(const double angle)
+  {
+    return rotate(stiffness_in_material_axes(ply_material()),
+                  ply_rotation(angle));
+  }
+
+  /** A ply at @p angle of ply_stiffness()'s material with strengths,
+   * Hoffman plasticity with hardening if @p plastic. */
+  template <int dim>
+  PlyProperties<dim>
+  plastic_ply(const double angle, const bool plastic)
+  {
+    PlyProperties<dim> p;
+    p.rotation = ply_rotation(angle);
+    p.stiffness_3d
+      = rotate(stiffness_in_material_axes(ply_material()), p.rotation);
+    p.stiffness    = restrict_to_model<dim>(p.stiffness_3d);
+    p.strengths.Xt = 1500, p.strengths.Xc = 1200;
+    p.strengths.Yt = 50, p.strengths.Yc = 200;
+    p.strengths.Zt = 45, p.strengths.Zc = 180;
+    p.strengths.S12 = 70, p.strengths.S13 = 75, p.strengths.S23 = 40;
+    p.density   = 1.6e-9;
+    p.plastic   = plastic;
+    p.hardening = 2;
+    return p;
   }
 
   /** The 3D stiffness restricted to the (x, z) plane for dim = 2 (plane

@@ -69,9 +69,13 @@ namespace amfrac
       double                       time  = 0;
     };
 
+    /** With @p finite_strain (total Lagrangian), the stress is the
+     * second Piola-Kirchhoff stress of the Green-Lagrange strain, so that
+     * a rigid rotation carries no error. */
     ErrorEstimator(const TiedCopyDoFs<dim>               &dofs,
                    const std::vector<PlyProperties<dim>> &plies,
-                   const FaceFilter                      &released);
+                   const FaceFilter                      &released,
+                   const bool finite_strain = false);
 
     /** All entries of a distributed reduced vector, on every rank. */
     dealii::Vector<double>
@@ -94,6 +98,7 @@ namespace amfrac
     const TiedCopyDoFs<dim>               &dofs;
     const std::vector<PlyProperties<dim>> &plies;
     const FaceFilter                       released;
+    const bool                             finite_strain;
     std::vector<SymmetricTensor<4, dim>>   compliance;
     MPI_Comm                               comm;
 

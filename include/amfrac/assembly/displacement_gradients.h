@@ -1,5 +1,6 @@
 #pragma once
 
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/vector.h>
@@ -29,5 +30,24 @@ namespace amfrac
             gradients[q][c] += u(i) * fe_values.shape_grad(i, q);
           }
       }
+  }
+
+  /** The Green-Lagrange strain E = (F^T F - I) / 2 of F = I + @p grad_u,
+   * as (H + H^T + H^T H) / 2 without forming F^T F - I, which would lose
+   * the small strains of a stiff ply to cancellation. */
+  template <int dim>
+  SymmetricTensor<2, dim>
+  green_lagrange_strain(const Tensor<2, dim> &grad_u)
+  {
+    return symmetrize(grad_u) + 0.5 * symmetrize(transpose(grad_u) * grad_u);
+  }
+
+  /** The strain of the kinematics: sym(@p grad_u) for small strains, the
+   * Green-Lagrange strain with @p finite_strain (total Lagrangian). */
+  template <int dim>
+  SymmetricTensor<2, dim>
+  strain_measure(const Tensor<2, dim> &grad_u, const bool finite_strain)
+  {
+    return finite_strain ? green_lagrange_strain(grad_u) : symmetrize(grad_u);
   }
 } // namespace amfrac

@@ -15,7 +15,7 @@ namespace amfrac
 {
   /**
    * Hoffman plasticity of the plies whose material has Materials/
-   * Plasticity = hoffman, on the small-strain Newton path: the history
+   * Plasticity = hoffman, on the static Newton path: the history
    * (plastic strain in material axes and the equivalent plastic strain
    * kappa) at the bulk quadrature points of the locally owned cells of
    * plastic plies, and what the plastic response changes in the elastic
@@ -37,6 +37,24 @@ namespace amfrac
    * over the whole step), so Newton iterations and line searches may
    * evaluate any trial state; commit() makes the state of the converged
    * step the history.
+   *
+   * With finite strain (Kinematics = total Lagrangian), the same law acts
+   * on the Green-Lagrange strain E = E_e + E_p (an additive split, for
+   * small elastic and plastic strains under large rotations): the second
+   * Piola-Kirchhoff stress S = C : (E - E_p) is returned to the Hoffman
+   * surface in the ply axes of the reference configuration, which turn
+   * with the material. The correction is then added to the total
+   * Lagrangian bulk (S = C : E), with delta E_i = sym(F^T grad phi_i):
+   *
+   * @code
+   *   R(u)_i += int (S - C E) : delta E_i
+   *   K_T    += int delta E_i : (C_ep - C) : delta E_j
+   *           + int grad phi_i . (S - C E) grad phi_j  (equal components)
+   * @endcode
+   *
+   * The geometric (second) term belongs to every point that has yielded,
+   * elastic now or not. The energy and the plastic work are those of S
+   * and E; below, eps stands for E and B for delta E then.
    */
   template <int dim>
   class PlasticPlies
@@ -51,8 +69,11 @@ namespace amfrac
      * then kappa. */
     static constexpr unsigned int n_components = 7;
 
+    /** With @p finite_strain, the law acts on the Green-Lagrange strain
+     * and the correction is that of the total Lagrangian bulk. */
     PlasticPlies(const TiedCopyDoFs<dim>               &dofs,
-                 const std::vector<PlyProperties<dim>> &plies);
+                 const std::vector<PlyProperties<dim>> &plies,
+                 const bool                             finite_strain = false);
 
     /** After the DoF layer changed: a virgin history on the new owned
      * cells of plastic plies (set_field() sets a transferred one). */
@@ -91,7 +112,9 @@ namespace amfrac
 
     /** What the plastic strain changes in the stored elastic energy of
      * @p relevant_u: int eps_p : C : (eps_p / 2 - eps), so that
-     * u.K u / 2 plus it is int (eps - eps_p) : C : (eps - eps_p) / 2.
+     * u.K u / 2 plus it is int (eps - eps_p) : C : (eps - eps_p) / 2
+     * (with finite strain: E in place of eps, added to int E : C : E / 2
+     * of the total Lagrangian bulk).
      * Summed over the ranks (collective). */
     double
     stored_energy_correction(const Vector &relevant_u) const;
@@ -183,6 +206,7 @@ namespace amfrac
     const TiedCopyDoFs<dim>               &dofs;
     const std::vector<PlyProperties<dim>> &plies;
     const Quadrature<dim>                  quadrature;
+    const bool                             finite_strain;
     /** Per ply: its law (nullptr: elastic ply). */
     std::vector<std::unique_ptr<HoffmanPlasticity>> laws;
     /** Per ply: laminate to material axes of Voigt strains (engineering

@@ -14,12 +14,17 @@
 namespace amfrac
 {
   /** Strain, stress in model and ply axes, and the Hoffman index, from
-   * the displacement gradient and the ply of each cell. */
+   * the displacement gradient and the ply of each cell. With finite
+   * strain (total Lagrangian), the strain is the Green-Lagrange strain
+   * and the stress the second Piola-Kirchhoff stress, both on the
+   * reference configuration's axes (the ply axes turn with the
+   * material). */
   template <int dim>
   class StressPostprocessor : public DataPostprocessor<dim>
   {
   public:
-    explicit StressPostprocessor(const std::vector<PlyProperties<dim>> &plies);
+    StressPostprocessor(const std::vector<PlyProperties<dim>> &plies,
+                        const bool                             finite_strain);
 
     void
     evaluate_vector_field(
@@ -42,6 +47,7 @@ namespace amfrac
 
   private:
     const std::vector<PlyProperties<dim>> &plies;
+    const bool                             finite_strain;
   };
 
 
@@ -55,9 +61,12 @@ namespace amfrac
   class FieldOutput
   {
   public:
+    /** @p finite_strain: the strain and stress of total Lagrangian
+     * kinematics (see StressPostprocessor). */
     FieldOutput(const parameters::Output              &parameters,
                 const TiedCopyDoFs<dim>               &dofs,
-                const std::vector<PlyProperties<dim>> &plies);
+                const std::vector<PlyProperties<dim>> &plies,
+                const bool                             finite_strain = false);
 
     /** @p copy_values: the displacement on the copy layer (owned cells). */
     void

@@ -11,7 +11,9 @@ namespace amfrac
 {
   /** Displacement and stress (model axes) at fixed points. The cell around
    * each point is found once; its owner evaluates and the values are
-   * summed over ranks, so every rank gets them. */
+   * summed over ranks, so every rank gets them. With finite strain (total
+   * Lagrangian) the stress is the second Piola-Kirchhoff stress of the
+   * Green-Lagrange strain. */
   template <int dim>
   class PointProbe
   {
@@ -19,7 +21,8 @@ namespace amfrac
     /** Throws std::invalid_argument naming a point outside the mesh. */
     PointProbe(const TiedCopyDoFs<dim>               &dofs,
                const std::vector<PlyProperties<dim>> &plies,
-               const std::vector<Point<dim>>         &points);
+               const std::vector<Point<dim>>         &points,
+               const bool                             finite_strain = false);
 
     struct Value
     {
@@ -43,6 +46,7 @@ namespace amfrac
 
     const TiedCopyDoFs<dim>                              &dofs;
     const std::vector<PlyProperties<dim>>                &plies;
+    const bool                                            finite_strain;
     std::vector<typename TiedCopyDoFs<dim>::CellIterator> cells;
     std::vector<Point<dim>>                               unit_points;
   };

@@ -280,10 +280,16 @@ namespace amfrac
       double strain_energy = 0;
       Vector converged_solution;
       Vector external_load;
-      /** K u + F_interfaces(u) - f: its entries on supports are reactions. */
+      /** K u + F_interfaces(u) - f, with the entries of hanging dofs handed
+       * to their masters (C^T of the hanging constraints alone): its
+       * entries on supports are the reactions, including what the
+       * hanging dofs next to a support hand to it. */
       Vector residual;
-      Vector condensed_residual;
-      Vector interface_force;
+      /** The hanging constraints of the mesh (null without hanging
+       * dofs). */
+      std::unique_ptr<HangingCondensation<dim>> hanging;
+      Vector                                    condensed_residual;
+      Vector                                    interface_force;
       /** Plastic plies: int B^T (sigma - C eps) (ghost entries writable)
        * and the plastic work of the run so far. */
       Vector plastic_force;
