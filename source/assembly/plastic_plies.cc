@@ -403,10 +403,10 @@ namespace amfrac
           const double JxW = values.JxW(q);
           strain_variations(values, q, finite_strain ? &H[q] : nullptr, grads);
           // The variation of the strain along d: sym(grad d), or
-          // sym(F^T grad d) with finite strain.
-          const Tensor<2, dim>          F = unit_symmetric_tensor<dim>() + H[q];
+          // sym(F^T grad d) = sym(grad d + H^T grad d) with finite strain.
           const SymmetricTensor<2, dim> strain_rate
-            = finite_strain ? symmetrize(transpose(F) * H_d[q]) : deps[q];
+            = finite_strain ? symmetrize(H_d[q] + transpose(H[q]) * H_d[q]) :
+                              deps[q];
           SymmetricTensor<2, dim> stress;
           if (material)
             stress = (tangent_in_model<dim>(response.tangent, ply.rotation)
