@@ -2050,14 +2050,6 @@ namespace amfrac
                            + "runs the Newton path, and refinement cycles "
                              "are for linear scenes; set Adaptivity/"
                              "Refinement cycles = 0");
-      if (buckling.active())
-        throw InputError("Buckling/Number of modes",
-                         "linear buckling analyses a small-strain state; "
-                         "with "
-                           + why
-                           + "follow the nonlinear path with an "
-                             "imperfection instead (or set Kinematics = small "
-                             "strain for the eigenvalue analysis)");
       if (nonlinear_solver.dissipation_control && cohesive.interfaces.empty())
         throw InputError("Nonlinear solver/Control",
                          "Control = dissipation or opening follows what the "
@@ -2082,6 +2074,17 @@ namespace amfrac
                          "Geometry/2D model = in-plane has no out-of-plane "
                          "displacement to buckle into; use Dimension = 3 or "
                          "2D model = cross-section");
+      const auto &times = buckling.analysis_times;
+      if (!times.empty() && times.back() > time.end_time * (1 + 1e-12))
+        throw InputError("Buckling/Analysis times",
+                         "the last, " + std::to_string(times.back())
+                           + ", lies past Time/End time ("
+                           + std::to_string(time.end_time) + ")");
+      if (!times.empty() && adaptivity.active())
+        throw InputError("Buckling/Analysis times",
+                         "refinement cycles analyse each mesh after its last "
+                         "step; leave Analysis times empty with Adaptivity/"
+                         "Refinement cycles");
     }
 
 
@@ -2166,7 +2169,13 @@ namespace amfrac
         "factors lambda of (K + lambda K_G) v = 0 and their modes, with K_G "
         "the geometric stiffness of the stress of that step (0: no "
         "buckling analysis). lambda multiplies the whole load of the last "
-        "step, prescribed displacements included. Written to buckling.csv "
+        "step, prescribed displacements included. With Kinematics = total "
+        "Lagrangian, the linearized pre-buckling of the state at t instead: "
+        "the lowest positive mu of (K_T + mu dK_T/dt) v = 0, K_T the "
+        "tangent and dK_T/dt its derivative along the path tangent du/dt; "
+        "lambda = (t + mu) / t, and the critical loads are extrapolated "
+        "along the path tangent (loads and prescribed displacements must "
+        "be proportional to t). Written to buckling.csv "
         "and, with VTU output, to buckling_modes.pvd. With Adaptivity/"
         "Refinement cycles, every cycle analyses its mesh (a cycle column "
         "in buckling.csv, lambda_1 in the convergence table).");
@@ -2191,6 +2200,16 @@ namespace amfrac
                         "Largest Lanczos basis (vectors) before the "
                         "analysis gives up with an error; each vector "
                         "costs two solution vectors of memory.");
+      prm.declare_entry(
+        "Analysis times",
+        "",
+        Patterns::List(Patterns::Double(0)),
+        "Load parameters t at which to analyse during the load history "
+        "instead of after the last step: the first converged step at or "
+        "past each (comma-separated, increasing, at most End time). Each "
+        "analysis adds its rows to buckling.csv (its time column the "
+        "state's t) and, with VTU output, its modes as "
+        "buckling_modes-N.pvd (N: the analysis, from 1).");
       prm.leave_subsection();
     }
 
@@ -2204,7 +2223,20 @@ namespace amfrac
       block_size     = prm.get_integer("Block size");
       tolerance      = prm.get_double("Tolerance");
       max_basis_size = prm.get_integer("Max basis size");
+      analysis_times.clear();
+      for (const auto &entry :
+           Utilities::split_string_list(prm.get("Analysis times")))
+        analysis_times.push_back(Utilities::string_to_double(entry));
       prm.leave_subsection();
+      for (unsigned int i = 1; i < analysis_times.size(); ++i)
+        if (!(analysis_times[i] > analysis_times[i - 1]))
+          throw InputError("Buckling/Analysis times", "must increase");
+      if (!analysis_times.empty() && !(analysis_times[0] > 0))
+        throw InputError("Buckling/Analysis times",
+                         "must be positive (t = 0 is the unloaded state)");
+      if (!analysis_times.empty() && n_modes == 0)
+        throw InputError("Buckling/Analysis times",
+                         "need Buckling/Number of modes > 0");
       // A block of 2 finds the pairs of equal modes of symmetric plates
       // for 1.5 times the solves of single-vector Lanczos (4: 2.4 times).
       if (block_size == 0)

@@ -9,18 +9,33 @@
 #include <array>
 #include <deal.II/base/mpi.h>
 #include <deal.II/numerics/data_out.h>
+#include <optional>
 #include <sstream>
 
 namespace amfrac
 {
+  namespace
+  {
+    std::optional<double>
+    find_column(const std::vector<std::pair<std::string, double>> &row,
+                const std::string                                 &name)
+    {
+      for (const auto &[key, value] : row)
+        if (key == name)
+          return value;
+      return std::nullopt;
+    }
+  } // namespace
+
+
+
   template <int dim>
-  void
-  Simulator<dim>::analyse_newton_buckling(LinearSolver &solver, const double t)
+  std::string
+  Simulator<dim>::interfaces_refuse_buckling(const double t)
   {
     // K must be symmetric positive definite: the tangent of an elastic
     // interface state (intact bonds, open cracks, frictionless contact).
     // The interface points read the neighbours' values: a ghosted copy.
-    relevant_solution = newton->converged_solution;
     const auto points = interfaces->output_points(relevant_solution);
     using Record      = InterfacePointRecord<dim>;
     std::array<std::size_t, 4> count{};
@@ -36,17 +51,91 @@ namespace amfrac
     const std::size_t softening = count[Record::softening];
     const std::size_t rubbing
       = parameters.cohesive.friction > 0 ? count[Record::contact] : 0;
-    if (softening > 0 || rubbing > 0)
+    if (softening == 0 && rubbing == 0)
+      return "";
+    std::ostringstream message;
+    message << "linear buckling needs a symmetric, positive definite "
+               "tangent, but at t="
+            << t << " " << softening << " interface point(s) soften and "
+            << rubbing
+            << " are in frictional contact: analyse a state before "
+               "damage starts (a shorter Time/End time or earlier "
+               "Buckling/Analysis times), or set Cohesive interfaces/"
+               "Friction coefficient = 0";
+    return message.str();
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::buckling_due(const double t)
+  {
+    const auto &times = parameters.buckling.analysis_times;
+    bool        due   = false;
+    while (next_analysis_time < times.size()
+           && t >= times[next_analysis_time] * (1 - 1e-12))
       {
-        std::ostringstream message;
-        message << "linear buckling needs a symmetric, positive definite "
-                   "tangent, but at t="
-                << t << " " << softening << " interface point(s) soften and "
-                << rubbing
-                << " are in frictional contact: analyse a state before "
-                   "damage starts (a shorter Time/End time), or set "
-                   "Cohesive interfaces/Friction coefficient = 0";
-        throw CollectiveError(message.str());
+        ++next_analysis_time;
+        due = true;
+      }
+    return due;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::analyse_during_history(LinearSolver &solver, const double t)
+  {
+    // An analysis that cannot be done (a softening front, a tangent that
+    // is no longer positive definite past a bifurcation) must not end the
+    // run: it is reported and skipped. The failures are collective (global
+    // counts, global norms of the Lanczos basis).
+    // The converged step's residual (with the hanging dofs' share handed
+    // on) is part of the state a checkpoint saves: kept as it was.
+    const Vector residual = newton->residual;
+    std::string  failure;
+    relevant_solution = newton->converged_solution;
+    if (interfaces)
+      failure = interfaces_refuse_buckling(t);
+    if (failure.empty())
+      try
+        {
+          analyse_newton_buckling(solver, t);
+        }
+      catch (const std::runtime_error &e)
+        {
+          failure = e.what();
+        }
+    if (!failure.empty())
+      pcout << "  buckling: warning: the analysis at t=" << t
+            << " is skipped: " << failure << std::endl;
+    // Its factorization is of the analysed tangent; the Newton path
+    // factorizes its own again.
+    solver_ready      = false;
+    solution          = newton->converged_solution;
+    relevant_solution = solution;
+    newton->residual  = residual;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::analyse_newton_buckling(LinearSolver &solver, const double t)
+  {
+    relevant_solution = newton->converged_solution;
+    if (interfaces)
+      {
+        const std::string failure = interfaces_refuse_buckling(t);
+        if (!failure.empty())
+          throw CollectiveError(failure);
+      }
+    if (finite_strain)
+      {
+        analyse_prebuckled_state(solver, t);
+        return;
       }
     update_residual(newton->converged_solution, &system_matrix);
     solver.initialize(system_matrix,
@@ -56,6 +145,119 @@ namespace amfrac
     solution          = newton->converged_solution;
     relevant_solution = solution;
     analyse_buckling(solver, newton->increment_constraints, t);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::analyse_prebuckled_state(LinearSolver &solver, const double t)
+  {
+    // Linearized pre-buckling (Brendel and Ramm 1980): along the path,
+    // K_T(t + mu) ~ K_T(t) + mu dK_T/dt, singular at the lowest positive
+    // mu of (K_T + mu dK_T/dt) v = 0. dK_T/dt is the derivative along the
+    // path tangent d = du/dt, by central differences: exact up to rounding
+    // for St Venant-Kirchhoff plies, whose tangent is quadratic in u.
+    TimerOutput::Scope scope(timer, "buckling");
+    Timer              watch;
+    NewtonState       &n = *newton;
+    if (!(t > 0))
+      throw CollectiveError("linear buckling of a pre-buckled state needs a "
+                            "loaded state: Time/End time must be positive");
+    setup_prebuckling_pattern();
+    const Vector u = n.converged_solution;
+    update_residual(u, &system_matrix);
+    solver.initialize(system_matrix,
+                      rigid_body_modes(),
+                      dim,
+                      owned_node_coordinates());
+    solver.set_check_residual(false);
+    // The path tangent: K_T d = f(1) with d = g(1) on the supports, and
+    // the rate K_T d - f(1) of the residual, whose entries on supports are
+    // the rates of the reactions.
+    pattern_derivative(u);
+    n.pattern_condensed *= -1;
+    solver.solve(n.pattern_increment, n.pattern_condensed);
+    Vector direction(n.pattern_increment);
+    n.increment_constraints.distribute(direction);
+    direction += n.load_pattern;
+    Vector rate(direction);
+    tangent_product(direction, rate);
+    rate -= n.load_unit;
+    if (n.hanging)
+      n.hanging->condense(rate);
+    const auto rates = load_columns(t, rate);
+
+    // The difference of the two tangents is small against their entries,
+    // and a bending mode's quadratic form cancels most of them: rounding
+    // in dK_T/dt grows like 1/h (the strip of buckling_strip_2d.prm, t_c
+    // from t = 1: 3.5e-6 at h = 1e-3 t, 3e-7 at 1e-2 t, 1e-8 at 0.1 t),
+    // while the interfaces' frame, the only part not quadratic in u,
+    // changes t_c by 1e-8 between 1e-3 t and 0.1 t (the panel). 0.02 t
+    // also keeps the two states near the analysed one.
+    const double                   h = 0.02 * t;
+    TrilinosWrappers::SparseMatrix derivative, behind;
+    derivative.reinit(system_matrix);
+    behind.reinit(system_matrix);
+    Vector state(u);
+    state.add(h, direction);
+    update_residual(state, &derivative);
+    state = u;
+    state.add(-h, direction);
+    update_residual(state, &behind);
+    derivative.add(-1., behind);
+    derivative *= 1. / (2 * h);
+    // Back to the converged state (its trial history and tangent).
+    update_residual(u, &system_matrix);
+    relevant_solution = u;
+    solution          = u;
+
+    const auto result = solve_buckling_problem(solver,
+                                               system_matrix,
+                                               derivative,
+                                               n.increment_constraints,
+                                               buckling_settings());
+    pcout << "  buckling of the pre-buckled state at t=" << t << ": "
+          << result.load_factors.size() << " critical t from "
+          << result.n_solves << " solves, " << watch.wall_time() << " s"
+          << std::endl;
+    if (result.load_factors.empty())
+      pcout << "  buckling: warning: the tangent along the path does not "
+               "become singular ahead of t="
+            << t << " for the lowest " << parameters.buckling.n_modes
+            << " mode(s)" << std::endl;
+    std::vector<double> factors;
+    for (const double mu : result.load_factors)
+      factors.push_back((t + mu) / t);
+    lowest_load_factor = factors.empty() ? 0. : factors.front();
+    write_buckling_modes(factors, result.modes, result.residuals, t, &rates);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::setup_prebuckling_pattern()
+  {
+    setup_load_pattern(true,
+                       "linear buckling of a total Lagrangian state (it "
+                       "follows the load path)",
+                       "Buckling/Number of modes");
+  }
+
+
+
+  template <int dim>
+  BucklingEigensolver::Settings
+  Simulator<dim>::buckling_settings() const
+  {
+    const auto                   &b = parameters.buckling;
+    BucklingEigensolver::Settings settings;
+    settings.n_modes        = b.n_modes;
+    settings.block_size     = b.block_size;
+    settings.tolerance      = b.tolerance;
+    settings.max_basis_size = b.max_basis_size;
+    return settings;
   }
 
 
@@ -122,6 +324,20 @@ namespace amfrac
     TrilinosWrappers::SparseMatrix geometric;
     assembler.reinit_matrix(fixed, geometric);
     assembler.assemble_geometric_matrix(state, fixed, geometric);
+    return solve_buckling_problem(solver, K, geometric, fixed, settings);
+  }
+
+
+
+  template <int dim>
+  BucklingEigensolver::Result
+  Simulator<dim>::solve_buckling_problem(
+    LinearSolver                         &solver,
+    const TrilinosWrappers::SparseMatrix &K,
+    const TrilinosWrappers::SparseMatrix &B,
+    const AffineConstraints<double>      &fixed,
+    const BucklingEigensolver::Settings  &settings)
+  {
     // The eigensolver checks its own residuals.
     solver.set_check_residual(false);
     return BucklingEigensolver(settings).solve(
@@ -129,7 +345,7 @@ namespace amfrac
         solver.solve(x, b);
       },
       K,
-      geometric,
+      B,
       [&](const types::global_dof_index i) { return !fixed.is_constrained(i); },
       Vector(dof_layer.locally_owned_dofs(), comm));
   }
@@ -224,16 +440,11 @@ namespace amfrac
                                    const AffineConstraints<double> &fixed,
                                    const double                     t)
   {
-    TimerOutput::Scope            scope(timer, "buckling");
-    Timer                         watch;
-    const auto                   &b = parameters.buckling;
-    BucklingEigensolver::Settings settings;
-    settings.n_modes        = b.n_modes;
-    settings.block_size     = b.block_size;
-    settings.tolerance      = b.tolerance;
-    settings.max_basis_size = b.max_basis_size;
-    const auto result       = buckling_eigenpairs(
-      solver, system_matrix, fixed, relevant_solution, settings);
+    TimerOutput::Scope scope(timer, "buckling");
+    Timer              watch;
+    const auto        &b      = parameters.buckling;
+    const auto         result = buckling_eigenpairs(
+      solver, system_matrix, fixed, relevant_solution, buckling_settings());
     pcout << "  buckling: " << result.load_factors.size()
           << " positive load factor(s) from " << result.n_solves << " solves, "
           << watch.wall_time() << " s" << std::endl;
@@ -255,10 +466,12 @@ namespace amfrac
 
   template <int dim>
   void
-  Simulator<dim>::write_buckling_modes(const std::vector<double> &factors,
-                                       std::vector<Vector>        modes,
-                                       const std::vector<double> &residuals,
-                                       const double               t)
+  Simulator<dim>::write_buckling_modes(
+    const std::vector<double>                         &factors,
+    std::vector<Vector>                                modes,
+    const std::vector<double>                         &residuals,
+    const double                                       t,
+    const std::vector<std::pair<std::string, double>> *rates)
   {
     AffineConstraints<double> homogeneous;
     make_constraints(t, homogeneous, true);
@@ -267,10 +480,17 @@ namespace amfrac
       buckling_summary = std::make_unique<History>(
         parameters.output.directory + "/buckling.csv",
         Utilities::MPI::this_mpi_process(comm) == 0);
-    const bool        cycles = parameters.adaptivity.active();
+    const bool cycles = parameters.adaptivity.active();
+    // Analyses during the load history: a series per analysis.
+    const bool during = !parameters.buckling.analysis_times.empty();
+    ++buckling_analyses;
+    const std::string number = Utilities::int_to_string(buckling_analyses, 2);
     const std::string prefix
       = cycles ? "buckling_mode-c" + Utilities::int_to_string(cycle, 2) + "-" :
+        during ? "buckling_mode-a" + number + "-" :
                  "buckling_mode-";
+    const std::string series
+      = during ? "buckling_modes-" + number + ".pvd" : "buckling_modes.pvd";
     std::vector<std::pair<double, std::string>> records;
     Vector                 relevant(dof_layer.locally_owned_dofs(),
                     dof_layer.locally_relevant_dofs(),
@@ -290,14 +510,22 @@ namespace amfrac
         std::vector<std::pair<std::string, double>> row
           = {{"mode", k + 1},
              {"load_factor", factors[k]},
-             {"residual", residuals[k]}};
+             {"residual", residuals[k]},
+             {"critical_time", factors[k] * t},
+             {"time", t}};
         if (cycles)
           row.insert(row.begin(), {"cycle", cycle});
-        // The loads at buckling: the load factor times each force of the
-        // last step's history row.
+        // The loads at buckling from each force of the last step's
+        // history row: scaled, or extrapolated along the path tangent.
         for (const auto &[name, value] : last_row)
           if (name.rfind("force_", 0) == 0 || name.rfind("reaction_", 0) == 0)
-            row.emplace_back("critical_" + name, factors[k] * value);
+            {
+              if (!rates)
+                row.emplace_back("critical_" + name, factors[k] * value);
+              else if (const auto rate = find_column(*rates, name))
+                row.emplace_back("critical_" + name,
+                                 value + (factors[k] - 1) * t * *rate);
+            }
         const auto values = probe->evaluate(copies);
         for (unsigned int p = 0; p < values.size(); ++p)
           for (unsigned int d = 0; d < dim; ++d)
@@ -325,7 +553,7 @@ namespace amfrac
         write_vtu_step(data_out,
                        parameters.output.directory,
                        prefix + Utilities::int_to_string(k + 1, 3),
-                       "buckling_modes.pvd",
+                       series,
                        k + 1,
                        records,
                        comm);
@@ -342,6 +570,18 @@ namespace amfrac
   Simulator<3>::analyse_buckling(LinearSolver &,
                                  const AffineConstraints<double> &,
                                  const double);
+  template bool
+  Simulator<2>::buckling_due(const double);
+  template bool
+  Simulator<3>::buckling_due(const double);
+  template void
+  Simulator<2>::analyse_during_history(LinearSolver &, const double);
+  template void
+  Simulator<3>::analyse_during_history(LinearSolver &, const double);
+  template void
+  Simulator<2>::setup_prebuckling_pattern();
+  template void
+  Simulator<3>::setup_prebuckling_pattern();
   template void
   Simulator<2>::analyse_newton_buckling(LinearSolver &, const double);
   template void

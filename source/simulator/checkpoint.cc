@@ -213,6 +213,7 @@ namespace amfrac
     run.put_text("parameters", parameters.text);
     run.put_integer("ranks", Utilities::MPI::n_mpi_processes(comm));
     run.put_integer("dimension", dim);
+    run.put_integer("total_lagrangian", parameters.total_lagrangian ? 1 : 0);
     run.put_integer("unknowns", dof_layer.n_dofs());
     run.put_integer("cycle", cycle);
     run.put_integers("mesh.changes", mesh_changes);
@@ -226,6 +227,12 @@ namespace amfrac
       save_table(run, "adaptivity", *cycle_summary);
     if (crack_events)
       save_table(run, "crack_events", *crack_events);
+    // Analyses during the load history (Buckling/Analysis times).
+    if (buckling_summary)
+      {
+        save_table(run, "buckling", *buckling_summary);
+        run.put_integer("buckling.analyses", buckling_analyses);
+      }
     if (field_output)
       {
         save_series(run, "fields", field_output->series());
@@ -362,6 +369,7 @@ namespace amfrac
   {
     restart = std::make_unique<CheckpointStore::Contents>(checkpoint);
     reading(checkpoint.folder, comm, [&]() {
+      check_kinematics(checkpoint.run);
       restore_mesh(checkpoint.run);
       if (checkpoint.run.get_integer("unknowns")
           != static_cast<std::int64_t>(dof_layer.n_dofs()))
@@ -372,6 +380,28 @@ namespace amfrac
           + std::to_string(dof_layer.n_dofs())
           + ": the checkpoint is of another scene");
     });
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::check_kinematics(const CheckpointData &run) const
+  {
+    // The state means other things in the two kinematics (the plastic
+    // strain is eps_p or E_p, the interface history lives in another
+    // frame). Checkpoints written before stop 43 do not say.
+    if (!run.is_integer("total_lagrangian"))
+      return;
+    const bool saved = run.get_integer("total_lagrangian") == 1;
+    if (saved != parameters.total_lagrangian)
+      throw InputError("Kinematics",
+                       std::string("the checkpoint is of a run with ")
+                         + (saved ? "total Lagrangian" : "small strain")
+                         + " kinematics, these parameters ask for "
+                         + (saved ? "small strain" : "total Lagrangian")
+                         + ": resume with the kinematics of the run "
+                           "that wrote it");
   }
 
 
@@ -420,6 +450,14 @@ namespace amfrac
             parameters.output.directory + "/cracks.csv",
             Utilities::MPI::this_mpi_process(comm) == 0);
           restore_table(run, "crack_events", *crack_events);
+        }
+      if (run.has("buckling.columns"))
+        {
+          buckling_summary = std::make_unique<History>(
+            parameters.output.directory + "/buckling.csv",
+            Utilities::MPI::this_mpi_process(comm) == 0);
+          restore_table(run, "buckling", *buckling_summary);
+          buckling_analyses = run.get_integer("buckling.analyses");
         }
     });
     pcout << "  resumed from " << restart->folder << " (step "

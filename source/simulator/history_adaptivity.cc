@@ -268,7 +268,7 @@ namespace amfrac
       // A new Newton state on the new mesh (with the run's totals).
       setup_newton();
       if (parameters.nonlinear_solver.dissipation_control)
-        setup_load_pattern(false, "dissipation or opening");
+        setup_load_pattern(false, "dissipation or opening control");
       newton->settling = true;
       dof_layer.gather(new_copies, newton->converged_solution);
       make_constraints(t, constraints, false);

@@ -489,15 +489,15 @@ namespace amfrac
   template <int dim>
   void
   Simulator<dim>::setup_load_pattern(const bool         with_loads,
-                                     const std::string &control)
+                                     const std::string &control,
+                                     const std::string &name)
   {
     // Path following scales the prescribed displacements (and loads) with
     // t: check that they are proportional to t.
-    const std::string name = "Nonlinear solver/Control";
     if (!with_loads && !loads.empty())
       throw InputError(name,
                        control
-                         + " control needs all loads to be "
+                         + " needs all loads to be "
                            "prescribed displacements (this scene has "
                            "tractions, pressures or a body force)");
     const double              end = parameters.time.end_time;
@@ -514,7 +514,7 @@ namespace amfrac
     if (Utilities::MPI::min(proportional ? 1 : 0, comm) == 0)
       throw InputError(name,
                        control
-                         + " control needs prescribed displacements "
+                         + " needs prescribed displacements "
                            "proportional to t (g(t) = t g(1))");
     newton->load_pattern = 0;
     at_end.distribute(newton->load_pattern);
@@ -528,7 +528,7 @@ namespace amfrac
     if (!(half.l2_norm() <= 1e-10 * end * newton->load_unit.l2_norm()))
       throw InputError(name,
                        control
-                         + " control needs loads proportional to t "
+                         + " needs loads proportional to t "
                            "(f(t) = t f(1))");
   }
 
@@ -1149,9 +1149,12 @@ namespace amfrac
     // more than the target or cannot converge (a snap-back), and hands
     // back when the structure stores rather than dissipates.
     if (p.dissipation_control)
-      setup_load_pattern(false, "dissipation or opening");
+      setup_load_pattern(false, "dissipation or opening control");
     if (p.arc_length)
-      setup_load_pattern(true, "arc-length");
+      setup_load_pattern(true, "arc-length control");
+    // Refused before the load steps rather than after them.
+    if (finite_strain && parameters.buckling.active())
+      setup_prebuckling_pattern();
     // Arc-length: the step length (0: nominal, set by the first step).
     double arc = 0;
     if (impactor && !restart)
@@ -1185,6 +1188,8 @@ namespace amfrac
         iterations       = progress.iterations;
         if (impactor)
           start_static_impactor(t);
+        // The analyses up to t are in the restored buckling table.
+        buckling_due(t);
       }
     const auto save = [&](CheckpointData &run, CheckpointData &part) {
       // Arc-length keeps its step length where dissipation control keeps
@@ -1450,6 +1455,8 @@ namespace amfrac
         if (p.dissipation_control)
           row.emplace_back("path_control", may_switch ? 0 : path_step ? 1 : 2);
         postprocess(step, t, newton->residual, row);
+        if (parameters.buckling.active() && buckling_due(t))
+          analyse_during_history(solver, t);
         if (adaptive)
           adapt_during_history(step, t);
         if (its <= p.easy_iterations)
@@ -1463,6 +1470,7 @@ namespace amfrac
     // A run resumed from its last step has nothing left to do; its
     // buckling analysis is in the buckling.csv of the run before.
     if (parameters.buckling.active()
+        && parameters.buckling.analysis_times.empty()
         && !(restart && iterations.size() == progress_at_restart))
       analyse_newton_buckling(solver, t);
     std::sort(iterations.begin(), iterations.end());

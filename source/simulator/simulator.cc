@@ -547,6 +547,8 @@ namespace amfrac
     // steps done.
     const unsigned int first
       = restart ? restart->run.get_integer("step") + 1 : 1;
+    // The analyses up to the restored step are in the restored table.
+    buckling_due((first - 1) * dt);
     for (unsigned int step = first; step <= n_steps; ++step)
       {
         const double t = step * dt;
@@ -602,12 +604,15 @@ namespace amfrac
                     residual,
                     {{"strain_energy", energies.strain_energy},
                      {"load_work", energies.load_work}});
+        if (parameters.buckling.active() && buckling_due(t))
+          analyse_buckling(solver, constraints, t);
         checkpoint_after_step(
           step, step, true, step == n_steps, [](auto &, auto &) {});
       }
     // A run resumed from its last step has nothing left to do; its
     // buckling analysis is in the buckling.csv of the run before.
-    if (parameters.buckling.active() && first <= n_steps)
+    if (parameters.buckling.active()
+        && parameters.buckling.analysis_times.empty() && first <= n_steps)
       analyse_buckling(solver, constraints, n_steps * dt);
   }
 
@@ -642,23 +647,11 @@ namespace amfrac
 
 
   template <int dim>
-  void
-  Simulator<dim>::postprocess(
-    const unsigned int                                 step,
-    const double                                       t,
-    const Vector                                      &residual,
-    const std::vector<std::pair<std::string, double>> &columns)
+  std::vector<std::pair<std::string, double>>
+  Simulator<dim>::load_columns(const double t, const Vector &residual) const
   {
-    TimerOutput::Scope scope(timer, "postprocess");
-    dof_layer.expand(relevant_solution, copy_values);
-
-    std::vector<std::pair<std::string, double>> row
-      = {{"step", step}, {"time", t}};
-    // Adaptive runs repeat the load steps on every mesh.
-    if (parameters.adaptivity.active())
-      row.insert(row.begin(), {"cycle", cycle});
-    row.insert(row.end(), columns.begin(), columns.end());
-    const char *axis = "xyz";
+    std::vector<std::pair<std::string, double>> row;
+    const char                                 *axis = "xyz";
     for (unsigned int k = 0; k < prescribed.size(); ++k)
       {
         std::array<double, dim> force{};
@@ -679,6 +672,31 @@ namespace amfrac
         for (unsigned int k = 0; k < prescribed.size(); ++k)
           row.emplace_back("force_" + prescribed[k].name, conjugate[k]);
       }
+    return row;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::postprocess(
+    const unsigned int                                 step,
+    const double                                       t,
+    const Vector                                      &residual,
+    const std::vector<std::pair<std::string, double>> &columns)
+  {
+    TimerOutput::Scope scope(timer, "postprocess");
+    dof_layer.expand(relevant_solution, copy_values);
+
+    std::vector<std::pair<std::string, double>> row
+      = {{"step", step}, {"time", t}};
+    // Adaptive runs repeat the load steps on every mesh.
+    if (parameters.adaptivity.active())
+      row.insert(row.begin(), {"cycle", cycle});
+    row.insert(row.end(), columns.begin(), columns.end());
+    const auto loads = load_columns(t, residual);
+    row.insert(row.end(), loads.begin(), loads.end());
+    const char *axis = "xyz";
     if (lever.active())
       {
         const auto [hinge, saddle] = lever.displacements(relevant_solution);

@@ -732,8 +732,34 @@ set Kinematics = total Lagrangian
 subsection Time
   set Time integration = explicit
 end"
-expect tl_buckling "Buckling/Number of modes" "$base
+expect buckling_times_order "Buckling/Analysis times" "$base
+subsection Buckling
+  set Number of modes = 1
+  set Analysis times  = 0.5, 0.2
+end"
+expect buckling_times_past_end "Buckling/Analysis times" "$base
+subsection Buckling
+  set Number of modes = 1
+  set Analysis times  = 0.5, 2
+end"
+expect buckling_times_no_modes "Buckling/Analysis times" "$base
+subsection Buckling
+  set Analysis times = 0.5
+end"
+# The pre-buckled state's analysis follows the load path: loads
+# proportional to t only (as for arc-length below).
+growing_traction="$base
 set Kinematics = total Lagrangian
+subsection Boundary conditions
+  subsection x-
+    set Type = displacement
+  end
+  subsection z+
+    set Type = traction
+    set Traction = 0; 0; -1-t
+  end
+end"
+expect tl_buckling_not_proportional "Buckling/Number of modes" "$growing_traction
 subsection Buckling
   set Number of modes = 1
 end"
@@ -750,17 +776,7 @@ expect arc_length_linear "Nonlinear solver/Control" "$base
 subsection Nonlinear solver
   set Control = arc-length
 end"
-expect arc_length_not_proportional "proportional to t" "$base
-set Kinematics = total Lagrangian
-subsection Boundary conditions
-  subsection x-
-    set Type = displacement
-  end
-  subsection z+
-    set Type = traction
-    set Traction = 0; 0; -1-t
-  end
-end
+expect arc_length_not_proportional "proportional to t" "$growing_traction
 subsection Nonlinear solver
   set Control = arc-length
 end"

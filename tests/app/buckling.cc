@@ -12,12 +12,22 @@
 //     load factor converging.
 //   softening <dcb_2d.prm>: a state with softening interface points is
 //     refused with the reason.
+//   prebuckled_strip <buckling_strip_2d.prm>: total Lagrangian states at
+//     0.3 and 0.9 of the critical t predict the same t_c (1e-3), the small
+//     strain one (2e-3) and Euler-Engesser's forces (1 %); the same two
+//     analysed during one run that goes on (Buckling/Analysis times).
+//   prebuckled_arch <shallow_arch_2d.prm>: the limit point predicted from
+//     states at 0.5, 0.8, 0.95 of it, falling towards it.
+//   prebuckled_panel <delaminated_panel.prm>: the panel's local buckling
+//     from its pre-buckled state, equal to the small-strain analysis
+//     without the imperfection.
 //   plate <buckling_plate.prm>: the specially orthotropic [0/90]s plate,
 //     simply supported, under uniaxial compression: lambda_1 within 2 % of
 //     classical plate theory for a thin plate (a/h = 100), clearly below it
 //     for a thick one (a/h = 10); the mode is the (1, 1) half-wave.
 #include "scene.h"
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -312,6 +322,226 @@ namespace
                 1e-2);
   }
 
+  /** The strip of buckling_strip_2d.prm, total Lagrangian, analysed
+   * after @p steps steps to t = @p end: the critical t of modes 1 and 2. */
+  std::pair<double, double>
+  prebuckled_strip_state(const std::string &file,
+                         const double       end,
+                         const unsigned int steps,
+                         const Strip       &strip)
+  {
+    std::ostringstream appended;
+    appended << "set Kinematics = total Lagrangian\n"
+                "subsection Time\n set End time = "
+             << end << "\n set Number of steps = " << steps
+             << "\nend\nsubsection Output\n set Field format = none\nend\n";
+    const auto     simulator = amfrac_test::run_scene<2>(file, appended.str());
+    const History &modes     = *simulator->buckling_history();
+    CHECK(modes.n_rows() == 3);
+    const double N_1 = -modes.value(0, "critical_reaction_x+_x");
+    const double N_2 = -modes.value(1, "critical_reaction_x+_x");
+    std::cout << "  t = " << end
+              << ": t_c = " << modes.value(0, "critical_time") << ", "
+              << modes.value(1, "critical_time") << ", N = " << N_1 << ", "
+              << N_2 << " (Engesser " << strip.critical(beta_L_1) << ", "
+              << strip.critical(beta_L_2) << ")" << std::endl;
+    CHECK_CLOSE(N_1 / strip.critical(beta_L_1), 1., 1e-2);
+    CHECK_CLOSE(N_2 / strip.critical(beta_L_2), 1., 1e-2);
+    CHECK(modes.value(0, "residual") < 1e-8);
+    CHECK_CLOSE(modes.value(0, "p0_uy"), 1., 1e-3);
+    CHECK(std::abs(modes.value(1, "p0_uy")) < 1e-6);
+    CHECK_CLOSE(modes.value(0, "critical_time"),
+                end * modes.value(0, "load_factor"),
+                1e-12);
+    return {modes.value(0, "critical_time"), modes.value(1, "critical_time")};
+  }
+
+  /** Linear buckling of a total Lagrangian state on a straight path: the
+   * strip's critical t, predicted from about 0.3 and 0.9 of it, agree
+   * with each other and with the small-strain analysis, and the critical
+   * forces with Euler-Engesser. */
+  void
+  prebuckled_strip(const std::string &file)
+  {
+    const Strip strip{135000, 10000, 0.3, 5000, 1, 100};
+    const auto  small = amfrac_test::run_scene<2>(
+      file, "subsection Output\n set Field format = none\nend\n");
+    const double t_small = small->buckling_history()->value(0, "critical_time");
+    const auto   early   = prebuckled_strip_state(file, 1, 1, strip);
+    const auto   late    = prebuckled_strip_state(file, 3, 6, strip);
+    std::cout << "small strain: t_c = " << t_small << std::endl;
+    CHECK_CLOSE(early.first / late.first, 1., 1e-3);
+    CHECK_CLOSE(early.second / late.second, 1., 1e-3);
+    CHECK_CLOSE(late.first / t_small, 1., 2e-3);
+
+    // Both states analysed during one run (Analysis times), which goes on
+    // past them: the same modes as the runs that end there.
+    const auto simulator = amfrac_test::run_scene<2>(
+      file,
+      "set Kinematics = total Lagrangian\n"
+      "subsection Time\n set End time = 3.2\n set Number of steps = 16\nend\n"
+      "subsection Buckling\n set Analysis times = 0.9, 3\nend\n"
+      "subsection Output\n set Field format = none\nend\n");
+    const History &modes = *simulator->buckling_history();
+    CHECK(modes.n_rows() == 6);
+    CHECK_CLOSE(modes.value(0, "time"), 1., 1e-12);
+    CHECK_CLOSE(modes.value(3, "time"), 3., 1e-12);
+    CHECK_CLOSE(modes.value(0, "critical_time") / early.first, 1., 1e-6);
+    CHECK_CLOSE(modes.value(4, "critical_time") / late.second, 1., 1e-6);
+    CHECK(simulator->history().n_rows() == 16);
+  }
+
+  /** The shallow arch of shallow_arch_2d.prm in the one-mode (Marguerre)
+   * theory of its header: t(c) with c the mid-span rise, and the
+   * prediction of linearized pre-buckling from the state at c, t + mu
+   * with K + mu dK/dt = 0 for the stiffness K = dt/ds, s = e - c. */
+  struct ShallowArch
+  {
+    double k = 2 * pi / 100, e = 0.75, q = 0.016, h = 0.5;
+    double Q11 = 135000 / (1 - 0.3 * 0.3 * 10000 / 135000);
+    double EI = Q11 * h * h * h / 12, EA = Q11 * h;
+
+    double
+    t(const double c) const
+    {
+      return k * k / 2
+             * (EI * k * k * (e - c) + EA * k * k * c * (e * e - c * c) / 16)
+             / q;
+    }
+    double
+    dt_dc(const double c) const
+    {
+      return k * k / 2 * (-EI * k * k + EA * k * k * (e * e - 3 * c * c) / 16)
+             / q;
+    }
+    double
+    d2t_dc2(const double c) const
+    {
+      return k * k / 2 * EA * k * k * (-6 * c) / 16 / q;
+    }
+    /** K = dt/ds = -dt/dc, dK/dt = (dK/ds) / K = (d2t/dc2) / K. */
+    double
+    predicted(const double c) const
+    {
+      const double K = -dt_dc(c), dK_dt = d2t_dc2(c) / K;
+      return t(c) - K / dK_dt;
+    }
+    /** The rise at load parameter @p load on the rising branch. */
+    double
+    rise(const double load) const
+    {
+      double c = e;
+      for (int it = 0; it < 100; ++it)
+        c -= (t(c) - load) / dt_dc(c);
+      return c;
+    }
+    /** The limit point: dt/dc = 0 at c^2 = (e^2 - 16 EI / EA) / 3. */
+    double
+    limit() const
+    {
+      return t(std::sqrt((e * e - 16 * EI / EA) / 3));
+    }
+  };
+
+  /** Linear buckling of a total Lagrangian state on a curved path: the
+   * shallow arch's limit point t_l predicted from states at 0.5, 0.8 and
+   * 0.95 of it. The predictions fall towards it from above. Near a limit
+   * point t(s) ~ t_l - a (s - s_l)^2 gives t + mu = 2 t_l - t (the
+   * prediction overshoots by the distance to it), so (t + t_c) / 2 is t_l
+   * to second order: from 0.95, within 2 % of the one-mode (Marguerre)
+   * theory's t_l (the continuum differs from it by about 1 %, see the
+   * scene). The one-mode theory's own prediction is a Rayleigh quotient of
+   * the pencil (K_T, dK_T/dt) over the mode shape, an upper bound of the
+   * continuum's lowest mu (up to that 1 %). */
+  void
+  prebuckled_arch(const std::string &file)
+  {
+    const ShallowArch   arch;
+    const double        t_limit = arch.limit();
+    std::vector<double> predictions;
+    double              estimate = 0;
+    for (const double fraction : {0.5, 0.8, 0.95})
+      {
+        const double       end = fraction * t_limit;
+        std::ostringstream appended;
+        appended << "subsection Nonlinear solver\n set Control = displacement"
+                    "\nend\nsubsection Time\n set End time = "
+                 << end
+                 << "\n set Number of steps = 10\nend\n"
+                    "subsection Buckling\n set Number of modes = 1\nend\n"
+                    "subsection Output\n set Field format = none\nend\n";
+        const auto simulator = amfrac_test::run_scene<2>(file, appended.str());
+        const History &modes = *simulator->buckling_history();
+        CHECK(modes.n_rows() == 1);
+        const double t_c   = modes.value(0, "critical_time");
+        const double bound = arch.predicted(arch.rise(end));
+        estimate           = (end + t_c) / 2;
+        std::cout << "arch at t = " << end << ": t_c = " << t_c
+                  << ", one-mode bound " << bound
+                  << ", (t + t_c) / 2 = " << estimate
+                  << ", one-mode limit point " << t_limit << std::endl;
+        CHECK(t_c < 1.01 * bound);
+        CHECK(t_c > end);
+        predictions.push_back(t_c);
+      }
+    CHECK(predictions[0] > predictions[1] && predictions[1] > predictions[2]);
+    CHECK(predictions[2] > 0.98 * t_limit);
+    CHECK_CLOSE(estimate / t_limit, 1., 2e-2);
+  }
+
+  /** The first buckling load of the nonlinear panel scene analysed at
+   * t = @p end with @p kinematics (the imperfection mode or none), and
+   * the mode's deflections of the sublaminate and the base. */
+  std::array<double, 3>
+  panel_buckling(const std::string &file,
+                 const std::string &kinematics,
+                 const double       end,
+                 const bool         imperfect)
+  {
+    std::ostringstream appended;
+    appended << "set Kinematics = " << kinematics
+             << "\nsubsection Geometry\n set Imperfection mode = "
+             << (imperfect ? 1 : 0)
+             << "\nend\nsubsection Nonlinear solver\n set Control = "
+                "displacement\nend\nsubsection Time\n set End time = "
+             << end << "\n set Number of steps = " << 2 * end
+             << "\nend\nsubsection Buckling\n set Number of modes = 1\nend\n"
+                "subsection Output\n set Field format = none\nend\n";
+    const auto     simulator = amfrac_test::run_scene<2>(file, appended.str());
+    const History &modes     = *simulator->buckling_history();
+    CHECK(modes.n_rows() == 1);
+    const double N = -modes.value(0, "critical_reaction_x+_x");
+    std::cout << kinematics << (imperfect ? ", imperfect" : ", perfect")
+              << ", t = " << end << ": N = " << N << " N/mm, mode p0_uy "
+              << modes.value(0, "p0_uy") << ", p1_uy "
+              << modes.value(0, "p1_uy") << std::endl;
+    return {N, modes.value(0, "p0_uy"), modes.value(0, "p1_uy")};
+  }
+
+  /** The seed's panel (prm/delaminated_panel.prm), total Lagrangian with
+   * the interfaces in the deformed frame: without the imperfection, the
+   * pre-buckled state's local buckling load equals the small-strain
+   * analysis's to O(strain) (5e-4 here); with it (1 % of the sublaminate's
+   * thickness), the prediction from a quarter and from half the load
+   * rises a little (the imperfect sublaminate's deflection), and the mode
+   * is the sublaminate's alone. */
+  void
+  prebuckled_panel(const std::string &file)
+  {
+    const auto small   = panel_buckling(file, "small strain", 1, false);
+    const auto perfect = panel_buckling(file, "total Lagrangian", 1, false);
+    CHECK_CLOSE(perfect[0] / small[0], 1., 2e-3);
+    const auto quarter = panel_buckling(file, "total Lagrangian", 1, true);
+    const auto half    = panel_buckling(file, "total Lagrangian", 2, true);
+    CHECK(quarter[0] > perfect[0] && half[0] > quarter[0]);
+    CHECK_CLOSE(half[0] / perfect[0], 1., 2e-2);
+    for (const auto &mode : {perfect, quarter, half})
+      {
+        CHECK_CLOSE(mode[1], 1., 1e-2);
+        CHECK(std::abs(mode[2]) < 0.05);
+      }
+  }
+
   /** A state with softening interface points has no symmetric positive
    * definite tangent: the analysis is refused with the reason. */
   void
@@ -355,11 +585,17 @@ main(int argc, char **argv)
     cycles(argv[2]);
   else if (what == "softening")
     softening_state(argv[2]);
+  else if (what == "prebuckled_strip")
+    prebuckled_strip(argv[2]);
+  else if (what == "prebuckled_arch")
+    prebuckled_arch(argv[2]);
+  else if (what == "prebuckled_panel")
+    prebuckled_panel(argv[2]);
   else
     {
       std::cerr
-        << "usage: app_buckling strip|plate|thin_film|panel|cycles|softening "
-           "FILE\n";
+        << "usage: app_buckling strip|plate|thin_film|panel|cycles|softening|"
+           "prebuckled_strip|prebuckled_arch|prebuckled_panel FILE\n";
       return 2;
     }
   return amfrac_test::summary();

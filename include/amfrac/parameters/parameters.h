@@ -411,6 +411,9 @@ namespace amfrac
       unsigned int block_size;
       double       tolerance;
       unsigned int max_basis_size;
+      /** Load parameters at which the converged state is analysed during
+       * the load history, increasing (empty: after the last step). */
+      std::vector<double> analysis_times;
 
       bool
       active() const

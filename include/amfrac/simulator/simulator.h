@@ -356,7 +356,11 @@ namespace amfrac
     /** The lowest positive load factor of the last buckling analysis (0:
      * none). */
     double lowest_load_factor = 0;
-    Timer  clock;
+    /** Buckling analyses written so far, and the next of
+     * Buckling/Analysis times to do. */
+    unsigned int buckling_analyses  = 0;
+    std::size_t  next_analysis_time = 0;
+    Timer        clock;
     /** Global remeshing (prisms): the last event, reported with the next
      * cycle, and the solution carried to the new mesh (tau_2), the first
      * guess of the next solve. */
@@ -435,6 +439,10 @@ namespace amfrac
     /** Replay the mesh changes of the checkpoint on the initial mesh. */
     void
     restore_mesh(const CheckpointData &run);
+    /** InputError naming Kinematics if the checkpoint was written with
+     * the other kinematics. */
+    void
+    check_kinematics(const CheckpointData &run) const;
     /** @p v cell by cell (locally owned cells, local dof order), so that
      * a restart reads it whatever the numbering or number of ranks. */
     void
@@ -757,13 +765,56 @@ namespace amfrac
      * softening point, no frictional contact: CollectiveError). */
     void
     analyse_newton_buckling(LinearSolver &solver, const double t);
-    /** buckling.csv (load factors and the loads they give) and the modes
-     * as buckling_modes.pvd, each scaled to a largest displacement of 1. */
+    /** Why the interfaces at relevant_solution refuse a buckling analysis
+     * (a point softens or rubs: no symmetric positive definite tangent),
+     * empty if they do not. Collective. */
+    std::string
+    interfaces_refuse_buckling(const double t);
+    /** Buckling/Analysis times: whether the converged step at @p t is the
+     * first at or past the next analysis time (the times it passed are
+     * consumed with it). */
+    bool
+    buckling_due(const double t);
+    /** analyse_newton_buckling() during the load history: a state that
+     * cannot be analysed is reported and skipped, not an error. */
     void
-    write_buckling_modes(const std::vector<double> &factors,
-                         std::vector<Vector>        modes,
-                         const std::vector<double> &residuals,
-                         const double               t);
+    analyse_during_history(LinearSolver &solver, const double t);
+    /** Total Lagrangian: linearized pre-buckling of the converged state at
+     * @p t. K_T(t + mu) ~ K_T(t) + mu dK_T/dt along the path tangent
+     * du/dt, and the lowest positive mu of (K_T + mu dK_T/dt) v = 0. */
+    void
+    analyse_prebuckled_state(LinearSolver &solver, const double t);
+    /** The load patterns of analyse_prebuckled_state() (InputError naming
+     * Buckling/Number of modes if the loads are not proportional to t). */
+    void
+    setup_prebuckling_pattern();
+    /** The lowest positive lambda of (K + lambda B) v = 0, K factorized in
+     * @p solver, the rows @p fixed constrains left out. */
+    BucklingEigensolver::Result
+    solve_buckling_problem(LinearSolver                         &solver,
+                           const TrilinosWrappers::SparseMatrix &K,
+                           const TrilinosWrappers::SparseMatrix &B,
+                           const AffineConstraints<double>      &fixed,
+                           const BucklingEigensolver::Settings  &settings);
+    BucklingEigensolver::Settings
+    buckling_settings() const;
+    /** The reaction_* and force_* columns of a history row from
+     * @p residual (reactions on the supports, forces conjugate to t). */
+    std::vector<std::pair<std::string, double>>
+    load_columns(const double t, const Vector &residual) const;
+    /** buckling.csv and the modes as buckling_modes.pvd, each scaled to a
+     * largest displacement of 1. A factor lambda is the critical load
+     * parameter over the state's, t_c = lambda t. Without @p rates the
+     * loads scale with it (lambda L); with them they follow the path
+     * tangent (L + (t_c - t) dL/dt, the rates dL/dt of the load columns
+     * in @p rates). */
+    void
+    write_buckling_modes(
+      const std::vector<double>                         &factors,
+      std::vector<Vector>                                modes,
+      const std::vector<double>                         &residuals,
+      const double                                       t,
+      const std::vector<std::pair<std::string, double>> *rates = nullptr);
     /** Time integration = explicit: central differences, lumped mass. */
     void
     run_explicit();
@@ -874,10 +925,12 @@ namespace amfrac
     /** The path-following patterns: the prescribed displacements at
      * t = 1 (load_pattern) and, if @p with_loads, the loads at t = 1
      * (load_unit); both must be proportional to t (InputError naming
-     * @p control otherwise), and without @p with_loads there must be no
-     * loads. */
+     * @p control and the parameter @p name otherwise), and without
+     * @p with_loads there must be no loads. */
     void
-    setup_load_pattern(const bool with_loads, const std::string &control);
+    setup_load_pattern(const bool         with_loads,
+                       const std::string &control,
+                       const std::string &name = "Nonlinear solver/Control");
     /** K_T(relevant_solution) @p direction, unconstrained. */
     void
     tangent_product(const Vector &direction, Vector &product);
