@@ -2014,9 +2014,12 @@ namespace amfrac
       refuse(cracks.active,
              "Crack insertion/Criterion (the same Hoffman surface would "
              "be the yield surface and the crack criterion)");
-      refuse(buckling.active() || geometry.imperfection_mode > 0,
-             "a linear buckling analysis (Buckling/Number of modes, "
-             "Geometry/Imperfection mode)");
+      // Imperfection mode is the elastic state's mode: the plies have not
+      // yielded at the set-up.
+      refuse(buckling.active(),
+             "a linear buckling analysis (Buckling/Number of modes): the "
+             "tangent of a yielded state differs between loading and "
+             "unloading");
       refuse(adaptivity.active(),
              "Adaptivity/Refinement cycles (cycles repeat a linear run; a "
              "plastic run adapts during its load history: Refine every, "

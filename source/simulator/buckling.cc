@@ -31,7 +31,7 @@ namespace amfrac
 
   template <int dim>
   std::string
-  Simulator<dim>::interfaces_refuse_buckling(const double t)
+  Simulator<dim>::interfaces_refuse_buckling(const double t, const bool report)
   {
     // K must be symmetric positive definite: the tangent of an elastic
     // interface state (intact bonds, open cracks, frictionless contact).
@@ -43,11 +43,12 @@ namespace amfrac
       ++count[point.status];
     for (auto &n : count)
       n = Utilities::MPI::sum(n, comm);
-    pcout << "  buckling of the Newton state at t=" << t
-          << ": interface points " << count[Record::intact] << " bonded, "
-          << count[Record::debonded] << " open, " << count[Record::contact]
-          << " in contact, " << count[Record::softening] << " softening"
-          << std::endl;
+    if (report)
+      pcout << "  buckling of the Newton state at t=" << t
+            << ": interface points " << count[Record::intact] << " bonded, "
+            << count[Record::debonded] << " open, " << count[Record::contact]
+            << " in contact, " << count[Record::softening] << " softening"
+            << std::endl;
     const std::size_t softening = count[Record::softening];
     const std::size_t rubbing
       = parameters.cohesive.friction > 0 ? count[Record::contact] : 0;
@@ -86,6 +87,24 @@ namespace amfrac
 
   template <int dim>
   void
+  Simulator<dim>::skip_failed_analysis(const std::function<void()> &analysis,
+                                       const double                 t)
+  {
+    try
+      {
+        analysis();
+      }
+    catch (const CollectiveError &e)
+      {
+        pcout << "  buckling: warning: the analysis at t=" << t
+              << " is skipped: " << e.what() << std::endl;
+      }
+  }
+
+
+
+  template <int dim>
+  void
   Simulator<dim>::analyse_during_history(LinearSolver &solver, const double t)
   {
     // An analysis that cannot be done (a softening front, a tangent that
@@ -95,22 +114,14 @@ namespace amfrac
     // The converged step's residual (with the hanging dofs' share handed
     // on) is part of the state a checkpoint saves: kept as it was.
     const Vector residual = newton->residual;
-    std::string  failure;
-    relevant_solution = newton->converged_solution;
-    if (interfaces)
-      failure = interfaces_refuse_buckling(t);
-    if (failure.empty())
-      try
-        {
-          analyse_newton_buckling(solver, t);
-        }
-      catch (const std::runtime_error &e)
-        {
-          failure = e.what();
-        }
-    if (!failure.empty())
+    relevant_solution     = newton->converged_solution;
+    const std::string refused
+      = interfaces ? interfaces_refuse_buckling(t) : std::string();
+    if (refused.empty())
+      skip_failed_analysis([&]() { analyse_newton_state(solver, t); }, t);
+    else
       pcout << "  buckling: warning: the analysis at t=" << t
-            << " is skipped: " << failure << std::endl;
+            << " is skipped: " << refused << std::endl;
     // Its factorization is of the analysed tangent; the Newton path
     // factorizes its own again.
     solver_ready      = false;
@@ -132,6 +143,15 @@ namespace amfrac
         if (!failure.empty())
           throw CollectiveError(failure);
       }
+    analyse_newton_state(solver, t);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::analyse_newton_state(LinearSolver &solver, const double t)
+  {
     if (finite_strain)
       {
         analyse_prebuckled_state(solver, t);
@@ -171,7 +191,6 @@ namespace amfrac
                       rigid_body_modes(),
                       dim,
                       owned_node_coordinates());
-    solver.set_check_residual(false);
     // The path tangent: K_T d = f(1) with d = g(1) on the supports, and
     // the rate K_T d - f(1) of the residual, whose entries on supports are
     // the rates of the reactions.
@@ -202,6 +221,7 @@ namespace amfrac
     Vector state(u);
     state.add(h, direction);
     update_residual(state, &derivative);
+    refuse_softening_ahead(t + h);
     state = u;
     state.add(-h, direction);
     update_residual(state, &behind);
@@ -231,6 +251,24 @@ namespace amfrac
       factors.push_back((t + mu) / t);
     lowest_load_factor = factors.empty() ? 0. : factors.front();
     write_buckling_modes(factors, result.modes, result.residuals, t, &rates);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::refuse_softening_ahead(const double t_ahead)
+  {
+    // The tangent ahead on the path enters dK_T/dt: a point that starts to
+    // soften there would put its softening tangent into the derivative.
+    if (!interfaces)
+      return;
+    const std::string refused = interfaces_refuse_buckling(t_ahead, false);
+    if (!refused.empty())
+      throw CollectiveError(
+        "linear buckling of the pre-buckled state differentiates the "
+        "tangent over 2 % of the load ahead, and there "
+        + refused);
   }
 
 
@@ -338,16 +376,33 @@ namespace amfrac
     const AffineConstraints<double>      &fixed,
     const BucklingEigensolver::Settings  &settings)
   {
-    // The eigensolver checks its own residuals.
+    // The eigensolver checks its own residuals. Its failures are
+    // decided on global quantities: collective.
+    const bool checked = solver.checks_residual();
     solver.set_check_residual(false);
-    return BucklingEigensolver(settings).solve(
-      [&](std::vector<Vector> &x, const std::vector<Vector> &b) {
-        solver.solve(x, b);
-      },
-      K,
-      B,
-      [&](const types::global_dof_index i) { return !fixed.is_constrained(i); },
-      Vector(dof_layer.locally_owned_dofs(), comm));
+    try
+      {
+        const auto result = BucklingEigensolver(settings).solve(
+          [&](std::vector<Vector> &x, const std::vector<Vector> &b) {
+            solver.solve(x, b);
+          },
+          K,
+          B,
+          [&](const types::global_dof_index i) {
+            return !fixed.is_constrained(i);
+          },
+          Vector(dof_layer.locally_owned_dofs(), comm));
+        solver.set_check_residual(checked);
+        return result;
+      }
+    catch (const CollectiveError &)
+      {
+        throw;
+      }
+    catch (const std::runtime_error &e)
+      {
+        throw CollectiveError(e.what());
+      }
   }
 
 
@@ -578,6 +633,12 @@ namespace amfrac
   Simulator<2>::analyse_during_history(LinearSolver &, const double);
   template void
   Simulator<3>::analyse_during_history(LinearSolver &, const double);
+  template void
+  Simulator<2>::skip_failed_analysis(const std::function<void()> &,
+                                     const double);
+  template void
+  Simulator<3>::skip_failed_analysis(const std::function<void()> &,
+                                     const double);
   template void
   Simulator<2>::setup_prebuckling_pattern();
   template void

@@ -1473,6 +1473,11 @@ namespace amfrac
         && parameters.buckling.analysis_times.empty()
         && !(restart && iterations.size() == progress_at_restart))
       analyse_newton_buckling(solver, t);
+    if (next_analysis_time < parameters.buckling.analysis_times.size())
+      pcout << "  buckling: warning: the run stopped at t=" << t
+            << ", before Buckling/Analysis times "
+            << parameters.buckling.analysis_times[next_analysis_time]
+            << std::endl;
     std::sort(iterations.begin(), iterations.end());
     pcout << "  " << step << " steps, " << total_iterations
           << " Newton iterations, " << n_factorizations

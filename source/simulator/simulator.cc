@@ -605,7 +605,8 @@ namespace amfrac
                     {{"strain_energy", energies.strain_energy},
                      {"load_work", energies.load_work}});
         if (parameters.buckling.active() && buckling_due(t))
-          analyse_buckling(solver, constraints, t);
+          skip_failed_analysis(
+            [&]() { analyse_buckling(solver, constraints, t); }, t);
         checkpoint_after_step(
           step, step, true, step == n_steps, [](auto &, auto &) {});
       }

@@ -59,7 +59,7 @@ namespace amfrac
           {
             K.vmult(K_w, w);
             if (pass == 0)
-              before = std::sqrt(std::max(w * K_w, 0.));
+              before = std::sqrt(std::max(K_norm_squared(w), 0.));
             for (unsigned int i = 0; i < V.size(); ++i)
               {
                 const double c = V[i] * K_w;
@@ -68,7 +68,7 @@ namespace amfrac
               }
           }
         K.vmult(K_w, w);
-        const double norm = std::sqrt(std::max(w * K_w, 0.));
+        const double norm = std::sqrt(std::max(K_norm_squared(w), 0.));
         if (!(norm > 1e-10 * before))
           return false;
         coordinates.back() = norm;
@@ -86,6 +86,23 @@ namespace amfrac
             H(n - 1, i)    = h;
           }
         return true;
+      }
+
+      /** w . K w with K w in K_w; throws if it is clearly negative: K
+       * is not positive definite (a state past a bifurcation or limit
+       * point), and the K inner product of the iteration is no inner
+       * product. Collective (global dot products). */
+      double
+      K_norm_squared(const Vector &w) const
+      {
+        const double w_K_w = w * K_w;
+        if (w_K_w < -1e-10 * w.l2_norm() * K_w.l2_norm())
+          throw std::runtime_error(
+            "the stiffness matrix is not positive definite (the Lanczos "
+            "iteration met a direction of negative energy): the state lies "
+            "past a bifurcation or limit point, or is not stable; analyse "
+            "an earlier state");
+        return w_K_w;
       }
 
       /** x = V s and its B x (s: column @p column of @p S, whose rows

@@ -746,6 +746,19 @@ expect buckling_times_no_modes "Buckling/Analysis times" "$base
 subsection Buckling
   set Analysis times = 0.5
 end"
+expect buckling_times_zero "Buckling/Analysis times" "$base
+subsection Buckling
+  set Number of modes = 1
+  set Analysis times  = 0, 0.5
+end"
+expect buckling_times_cycles "Buckling/Analysis times" "$base
+subsection Buckling
+  set Number of modes = 1
+  set Analysis times  = 0.5
+end
+subsection Adaptivity
+  set Refinement cycles = 1
+end"
 # The pre-buckled state's analysis follows the load path: loads
 # proportional to t only (as for arc-length below).
 growing_traction="$base

@@ -765,11 +765,14 @@ namespace amfrac
      * softening point, no frictional contact: CollectiveError). */
     void
     analyse_newton_buckling(LinearSolver &solver, const double t);
+    /** analyse_newton_buckling() once the interfaces have been checked. */
+    void
+    analyse_newton_state(LinearSolver &solver, const double t);
     /** Why the interfaces at relevant_solution refuse a buckling analysis
      * (a point softens or rubs: no symmetric positive definite tangent),
      * empty if they do not. Collective. */
     std::string
-    interfaces_refuse_buckling(const double t);
+    interfaces_refuse_buckling(const double t, const bool report = true);
     /** Buckling/Analysis times: whether the converged step at @p t is the
      * first at or past the next analysis time (the times it passed are
      * consumed with it). */
@@ -779,6 +782,14 @@ namespace amfrac
      * cannot be analysed is reported and skipped, not an error. */
     void
     analyse_during_history(LinearSolver &solver, const double t);
+    /** Run @p analysis of the state at @p t; a CollectiveError it throws
+     * is reported as a warning instead of ending the run. */
+    void
+    skip_failed_analysis(const std::function<void()> &analysis, const double t);
+    /** CollectiveError if an interface point of relevant_solution (the
+     * state at @p t_ahead on the path) softens or rubs. */
+    void
+    refuse_softening_ahead(const double t_ahead);
     /** Total Lagrangian: linearized pre-buckling of the converged state at
      * @p t. K_T(t + mu) ~ K_T(t) + mu dK_T/dt along the path tangent
      * du/dt, and the lowest positive mu of (K_T + mu dK_T/dt) v = 0. */

@@ -67,6 +67,11 @@ namespace amfrac
     {
       check_residual = value;
     }
+    bool
+    checks_residual() const
+    {
+      return check_residual;
+    }
 
     /** Whether the matrices are symmetric (CG) or not (GMRES); only the
      * iterative solver cares. */
