@@ -353,6 +353,22 @@ namespace
     CHECK(balance < 5e-3);
   }
 
+  /** The first row of the plastic run @p p with a yielding point; every
+   * row before it must equal the elastic run @p e's bit for bit (elastic
+   * plies pay nothing: points that never yielded are not visited). */
+  std::size_t
+  first_yield_of_identical(const History &p, const History &e)
+  {
+    std::size_t first = 0;
+    while (first < p.n_rows() && p.value(first, "yielding_points") == 0)
+      {
+        for (const auto &column : e.column_names())
+          CHECK(p.value(first, column) == e.value(first, column));
+        ++first;
+      }
+    return first;
+  }
+
   /** The plastic strip (prm/plastic_strip_2d.prm) against the same strip
    * with elastic plies. */
   void
@@ -366,15 +382,9 @@ namespace
     const History &p = plastic->history(), &e = elastic->history();
     // Identical, bit for bit, up to the first yield (elastic plies pay
     // nothing: points that never yielded are not visited).
-    std::size_t first = 0;
-    while (first < p.n_rows() && p.value(first, "yielding_points") == 0)
-      {
-        for (const auto &column : e.column_names())
-          CHECK(p.value(first, column) == e.value(first, column));
-        ++first;
-      }
-    const std::size_t last = p.n_rows() - 1;
-    const auto        N    = [](const History &h, const std::size_t r) {
+    const std::size_t first = first_yield_of_identical(p, e);
+    const std::size_t last  = p.n_rows() - 1;
+    const auto        N     = [](const History &h, const std::size_t r) {
       return -h.value(r, "reaction_x+_x");
     };
     // Both end at the full shortening: the plastic strip carries less.
@@ -431,14 +441,8 @@ namespace
     const auto     elastic = amfrac_test::run_scene<2>(file, steps);
     const History &p = plastic->history(), &e = elastic->history();
     CHECK(p.n_rows() == e.n_rows());
-    std::size_t first = 0;
-    while (first < p.n_rows() && p.value(first, "yielding_points") == 0)
-      {
-        for (const auto &column : e.column_names())
-          CHECK(p.value(first, column) == e.value(first, column));
-        ++first;
-      }
-    const std::size_t last = p.n_rows() - 1;
+    const std::size_t first = first_yield_of_identical(p, e);
+    const std::size_t last  = p.n_rows() - 1;
     std::cout << "  first yield at t = " << p.value(first, "time")
               << ", N = " << -p.value(first, "reaction_x+_x")
               << " N/mm; at t = 12: " << p.value(last, "yielding_points")
