@@ -1,6 +1,8 @@
 #include <algorithm>
 #include <amfrac/base/concatenate.h>
 #include <amfrac/contact/rigid_impactor.h>
+#include <amfrac/parameters/expressions.h>
+#include <amfrac/parameters/input_error.h>
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -29,6 +31,43 @@ namespace amfrac
       const double distance = d.norm();
       return {d, distance, distance - radius};
     }
+
+    /** @p v less its part along the unit vector @p n. */
+    template <int dim>
+    Tensor<1, dim>
+    tangential(const Tensor<1, dim> &v, const Tensor<1, dim> &n)
+    {
+      return v - (v * n) * n;
+    }
+
+    /** The order of the records of @p stride values in @p values, each led
+     * by a node's position, by position: the same on any number of ranks
+     * (the numbering of the nodes depends on the partition). */
+    template <int dim>
+    std::vector<std::size_t>
+    order_by_position(const std::vector<double> &values,
+                      const unsigned int         stride)
+    {
+      std::vector<std::size_t> order(values.size() / stride);
+      std::iota(order.begin(), order.end(), 0);
+      std::sort(order.begin(), order.end(), [&](const auto a, const auto b) {
+        return std::lexicographical_compare(values.begin() + a * stride,
+                                            values.begin() + a * stride + dim,
+                                            values.begin() + b * stride,
+                                            values.begin() + b * stride + dim);
+      });
+      return order;
+    }
+
+    template <int dim>
+    std::array<double, dim>
+    key_of(const Point<dim> &p)
+    {
+      std::array<double, dim> key;
+      for (unsigned int d = 0; d < dim; ++d)
+        key[d] = p[d];
+      return key;
+    }
   } // namespace
 
 
@@ -40,6 +79,10 @@ namespace amfrac
     , radius(p.radius)
     , mass(p.mass)
     , penalty(p.penalty)
+    , friction_coefficient(p.friction)
+    , tangential_factor(p.tangential_factor)
+    , static_mode(p.prescribed)
+    , guided(p.guided && !p.prescribed)
     , boundary_id(p.boundary_id)
     , normal_axis(p.boundary_id / 2)
     , inward(p.boundary_id % 2 == 1 ? -1. : 1.)
@@ -49,8 +92,27 @@ namespace amfrac
                 ExcInternalError());
     for (unsigned int d = 0; d < dim; ++d)
       center[d] = p.center[d], velocity[d] = p.velocity[d];
-    row_velocity = velocity;
-    start        = center;
+    row_velocity     = velocity;
+    start            = center;
+    committed_center = center;
+    if (!p.path.empty())
+      path = make_expression_function<dim>(p.path, 3, "", "Impactor/Path");
+  }
+
+
+
+  template <int dim>
+  void
+  RigidImpactor<dim>::move_to(const double t)
+  {
+    if (!path)
+      {
+        center = start + t * velocity;
+        return;
+      }
+    path->set_time(t);
+    for (unsigned int d = 0; d < dim; ++d)
+      center[d] = start[d] + path->value(Point<dim>(), d);
   }
 
 
@@ -104,9 +166,116 @@ namespace amfrac
                 node.stiffness += penalty * area;
               }
           }
+    // A mesh change keeps the friction history of the nodes that stay
+    // (refinement keeps every vertex where it was), gathered from all
+    // ranks: the new partition may give a node to another rank.
+    const std::vector<double> kept = friction_coefficient > 0 && set_up ?
+                                       friction_state() :
+                                       std::vector<double>();
     nodes.clear();
     for (auto &[dof, node] : found)
       nodes.push_back(node);
+    set_up = true;
+    if (friction_coefficient == 0)
+      return;
+    refuse_shared_positions();
+    history.assign(nodes.size(), History());
+    trial_history = history;
+    if (!kept.empty())
+      restore_history(kept, false);
+  }
+
+
+
+  template <int dim>
+  void
+  RigidImpactor<dim>::refuse_shared_positions() const
+  {
+    // The friction history is keyed by position (the numbering depends on
+    // the partition): two copies of a node on an interface that crosses
+    // the face would share a key.
+    std::vector<double> positions;
+    for (const Node &node : nodes)
+      for (unsigned int c = 0; c < dim; ++c)
+        positions.push_back(node.position[c]);
+    positions = concatenate_over_ranks(positions, comm);
+    const std::vector<std::size_t> order
+      = order_by_position<dim>(positions, dim);
+    for (std::size_t k = 1; k < order.size(); ++k)
+      if (std::equal(positions.begin() + order[k - 1] * dim,
+                     positions.begin() + order[k - 1] * dim + dim,
+                     positions.begin() + order[k] * dim))
+        throw InputError("Impactor/Friction coefficient",
+                         "the impactor's face crosses a ply interface or "
+                         "crack (two copies of a node lie at one point); "
+                         "friction there is not supported yet: choose a "
+                         "face within one ply or set it to 0");
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  RigidImpactor<dim>::displacement(const Node &node, const Vector &u) const
+  {
+    Tensor<1, dim> v;
+    for (unsigned int c = 0; c < dim; ++c)
+      v[c] = u(node.dofs[c]);
+    return v;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  RigidImpactor<dim>::slip_increment(const unsigned int i,
+                                     const Vector      &u) const
+  {
+    const History &h = history[i];
+    // A node new to the face (after a mesh change) starts from where it is.
+    if (!h.referenced)
+      return Tensor<1, dim>();
+    return displacement(nodes[i], u) - h.displacement
+           - (center - committed_center);
+  }
+
+
+
+  template <int dim>
+  typename RigidImpactor<dim>::Response
+  RigidImpactor<dim>::respond(const unsigned int i, const Vector &u) const
+  {
+    const Node &node = nodes[i];
+    Response    r;
+    const auto [d, distance, gap] = offset(node, u, center, radius);
+    if (gap >= 0 || distance == 0)
+      return r;
+    r.n        = d / distance;
+    r.gap      = gap;
+    r.distance = distance;
+    r.pressure = -node.stiffness * gap;
+    if (friction_coefficient == 0)
+      return r;
+    // The slip of the node against the sphere's surface since the commit,
+    // from displacement increments (a stiff spring times the round-off of
+    // positions would be a residual floor).
+    const History       &h         = history[i];
+    const Tensor<1, dim> increment = slip_increment(i, u);
+    const Tensor<1, dim> stored    = h.in_contact ? h.force : Tensor<1, dim>();
+    const double         kt        = tangential_factor * node.stiffness;
+    r.slip                         = tangential(increment, r.n);
+    r.old_force                    = tangential(stored, r.n);
+    r.normal_part                  = (stored - kt * increment) * r.n;
+    r.trial                        = r.old_force - kt * r.slip;
+    r.friction                     = r.trial;
+    r.trial_norm                   = r.trial.norm();
+    const double limit             = friction_coefficient * r.pressure;
+    // On the cone within round-off counts as sticking, so that the
+    // decision does not depend on the order of sums (as in BodyContact).
+    r.slipping = r.trial_norm > limit * (1 + 1e-10);
+    if (r.slipping)
+      r.friction *= limit / r.trial_norm;
+    return r;
   }
 
 
@@ -116,17 +285,52 @@ namespace amfrac
   RigidImpactor<dim>::evaluate(const Vector &u, Vector &contact)
   {
     contact = 0;
-    // This rank's contributions per node in contact: its position (the
-    // key of the sum), the force on the sphere and the energy.
-    constexpr unsigned int stride = 2 * dim + 1;
+    // This rank's contributions per node in contact or releasing its stick
+    // spring: its position (the key of the sum), the force on the sphere,
+    // the energy, the dissipation, the normal and friction forces and
+    // whether it slides.
+    constexpr unsigned int stride = 2 * dim + 5;
     std::vector<double>    shares;
-    double                 deepest = 0;
-    for (const Node &node : nodes)
+    double                 deepest       = 0;
+    const bool             with_friction = friction_coefficient > 0;
+    std::vector<History>  &updated = static_mode ? trial_history : history;
+    for (unsigned int i = 0; i < nodes.size(); ++i)
       {
-        const auto [d, distance, gap] = offset(node, u, center, radius);
-        if (gap >= 0 || distance == 0)
+        const Node    &node = nodes[i];
+        const Response r    = respond(i, u);
+        Tensor<1, dim> on_node;
+        double         stick = 0, dissipated = 0;
+        if (with_friction)
+          {
+            // A copy: in explicit runs the update overwrites it.
+            const History        h         = history[i];
+            const Tensor<1, dim> increment = slip_increment(i, u);
+            History             &next      = updated[i];
+            next                           = History();
+            next.displacement              = displacement(node, u);
+            next.referenced                = true;
+            if (r.pressure == 0 && !h.in_contact)
+              continue;
+            if (r.pressure > 0)
+              {
+                const double kt   = tangential_factor * node.stiffness;
+                stick             = r.friction.norm_square() / (2 * kt);
+                next.force        = r.friction;
+                next.stick_energy = stick;
+                next.in_contact   = true;
+              }
+            // The friction force's work less the change of the stick
+            // spring's energy: zero while the node sticks. A node that
+            // left contact did the work of its old force over the step
+            // and releases its spring.
+            dissipated = r.pressure > 0 ?
+                           -0.5 * (r.old_force + r.friction) * r.slip :
+                           -0.5 * h.force * increment;
+            dissipated -= stick - (h.in_contact ? h.stick_energy : 0.);
+          }
+        else if (r.pressure == 0)
           continue;
-        const Tensor<1, dim> on_node = (-node.stiffness * gap / distance) * d;
+        on_node = r.pressure * r.n + r.friction;
         for (unsigned int c = 0; c < dim; ++c)
           shares.push_back(node.position[c]);
         for (unsigned int c = 0; c < dim; ++c)
@@ -134,8 +338,12 @@ namespace amfrac
             contact(node.dofs[c]) = on_node[c];
             shares.push_back(-on_node[c]);
           }
-        shares.push_back(0.5 * node.stiffness * gap * gap);
-        deepest = std::max(deepest, -gap);
+        shares.push_back(0.5 * node.stiffness * r.gap * r.gap + stick);
+        shares.push_back(dissipated);
+        shares.push_back(r.pressure);
+        shares.push_back(r.friction.norm());
+        shares.push_back(r.slipping ? 1 : 0);
+        deepest = std::max(deepest, -r.gap);
       }
     contact.compress(VectorOperation::insert);
     // Every rank gathers all shares and adds them in the order of the
@@ -143,43 +351,88 @@ namespace amfrac
     // partition, their positions do not.
     shares  = concatenate_over_ranks(shares, comm);
     deepest = Utilities::MPI::max(deepest, comm);
-    std::vector<std::size_t> order(shares.size() / stride);
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](const auto a, const auto b) {
-      return std::lexicographical_compare(shares.begin() + a * stride,
-                                          shares.begin() + a * stride + dim,
-                                          shares.begin() + b * stride,
-                                          shares.begin() + b * stride + dim);
-    });
+    const std::vector<std::size_t> order
+      = order_by_position<dim>(shares, stride);
     force  = Tensor<1, dim>();
-    energy = 0;
+    energy = pressure_sum = friction_sum = 0;
+    n_contact = n_sliding = 0;
+    double dissipated     = 0;
     for (const std::size_t k : order)
       {
         const double *share = shares.data() + k * stride + dim;
         for (unsigned int c = 0; c < dim; ++c)
           force[c] += share[c];
         energy += share[dim];
+        dissipated += share[dim + 1];
+        pressure_sum += share[dim + 2];
+        friction_sum += share[dim + 3];
+        n_sliding += share[dim + 4] > 0 ? 1 : 0;
+        n_contact += share[dim + 2] > 0 ? 1 : 0;
       }
-    n_contact    = order.size();
     penetration  = deepest;
     acceleration = force / mass;
+    if (guided)
+      for (unsigned int c = 0; c < dim; ++c)
+        if (c != normal_axis)
+          acceleration[c] = 0;
+    if (!with_friction)
+      return;
+    if (static_mode)
+      pending_dissipation = dissipated;
+    else
+      {
+        dissipation += dissipated;
+        committed_center = center;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  RigidImpactor<dim>::commit()
+  {
+    if (friction_coefficient == 0)
+      return;
+    history = trial_history;
+    dissipation += pending_dissipation;
+    pending_dissipation = 0;
+    committed_center    = center;
   }
 
 
 
   template <int dim>
   Tensor<2, dim>
-  RigidImpactor<dim>::node_tangent(const Node &node, const Vector &u) const
+  RigidImpactor<dim>::node_tangent(const unsigned int i, const Vector &u) const
   {
-    const auto [d, distance, gap] = offset(node, u, center, radius);
-    if (gap >= 0 || distance == 0)
+    const Response r = respond(i, u);
+    if (r.pressure == 0)
       return Tensor<2, dim>();
-    const Tensor<1, dim> n       = d / distance;
-    const Tensor<2, dim> normal  = outer_product(n, n);
+    const double         k       = nodes[i].stiffness;
+    const Tensor<2, dim> normal  = outer_product(r.n, r.n);
     const Tensor<2, dim> in_face = unit_symmetric_tensor<dim>() - normal;
     // The gap's curvature term softens the tangential directions: a node
     // pressed in by |g| slides around the sphere of radius r.
-    return node.stiffness * (normal + (gap / distance) * in_face);
+    Tensor<2, dim> tangent = k * (normal + (r.gap / r.distance) * in_face);
+    if (friction_coefficient == 0)
+      return tangent;
+    // The trial force T = P(n) v, v = f_old - k_t (du - dc), turns with
+    // the normal, dn/du = P / r: dT/du = -k_t P - (n (x) T + (n . v) P) / r.
+    const double         kt = tangential_factor * k;
+    const Tensor<2, dim> trial_gradient
+      = -kt * in_face
+        - (outer_product(r.n, r.trial) + r.normal_part * in_face) / r.distance;
+    if (!r.slipping)
+      return tangent - trial_gradient;
+    // Sliding: the force mu p t with t = T / |T|; p grows with the
+    // penetration (mu k t (x) n), t turns with T.
+    const Tensor<1, dim> t     = r.friction / r.friction.norm();
+    const double         limit = friction_coefficient * r.pressure;
+    const Tensor<2, dim> turn
+      = Tensor<2, dim>(unit_symmetric_tensor<dim>()) - outer_product(t, t);
+    return tangent + friction_coefficient * k * outer_product(t, r.n)
+           - (limit / r.trial_norm) * (turn * trial_gradient);
   }
 
 
@@ -192,14 +445,14 @@ namespace amfrac
   {
     FullMatrix<double>                   block(dim, dim);
     std::vector<types::global_dof_index> dofs(dim);
-    for (const Node &node : nodes)
+    for (unsigned int i = 0; i < nodes.size(); ++i)
       {
-        const Tensor<2, dim> k = node_tangent(node, u);
+        const Tensor<2, dim> k = node_tangent(i, u);
         if (k.norm() == 0)
           continue;
         for (unsigned int a = 0; a < dim; ++a)
           {
-            dofs[a] = node.dofs[a];
+            dofs[a] = nodes[i].dofs[a];
             for (unsigned int b = 0; b < dim; ++b)
               block(a, b) = k[a][b];
           }
@@ -215,12 +468,12 @@ namespace amfrac
                                           const Vector &direction,
                                           Vector       &product) const
   {
-    for (const Node &node : nodes)
+    for (unsigned int i = 0; i < nodes.size(); ++i)
       {
-        const Tensor<2, dim> k = node_tangent(node, u);
+        const Tensor<2, dim> k = node_tangent(i, u);
         for (unsigned int a = 0; a < dim; ++a)
           for (unsigned int b = 0; b < dim; ++b)
-            product(node.dofs[a]) += k[a][b] * direction(node.dofs[b]);
+            product(nodes[i].dofs[a]) += k[a][b] * direction(nodes[i].dofs[b]);
       }
     product.compress(VectorOperation::add);
   }
@@ -233,7 +486,7 @@ namespace amfrac
   {
     for (const Node &node : nodes)
       for (unsigned int c = 0; c < dim; ++c)
-        rows(node.dofs[c]) += 2 * node.stiffness;
+        rows(node.dofs[c]) += 2 * stiffest() * node.stiffness;
     rows.compress(VectorOperation::add);
   }
 
@@ -246,7 +499,7 @@ namespace amfrac
     double sum = 0;
     for (const Node &node : nodes)
       sum += node.stiffness;
-    return 2 * Utilities::MPI::sum(sum, comm) / mass;
+    return 2 * stiffest() * Utilities::MPI::sum(sum, comm) / mass;
   }
 
 
@@ -258,7 +511,8 @@ namespace amfrac
     double largest = 0;
     for (const Node &node : nodes)
       if (mass(node.dofs[0]) > 0)
-        largest = std::max(largest, node.stiffness / mass(node.dofs[0]));
+        largest
+          = std::max(largest, stiffest() * node.stiffness / mass(node.dofs[0]));
     return Utilities::MPI::max(largest, comm);
   }
 
@@ -275,12 +529,41 @@ namespace amfrac
           0.;
     row_velocity = velocity;
     row_time     = t;
-    return {{"impactor_position", center[a]},
-            {"impactor_velocity", velocity[a]},
-            {"contact_force", -inward * force[a]},
-            {"mean_contact_force", mean},
-            {"contact_nodes", n_contact},
-            {"penetration", penetration}};
+    std::vector<std::pair<std::string, double>> columns
+      = {{"impactor_position", center[a]},
+         {"impactor_velocity", velocity[a]},
+         {"contact_force", -inward * force[a]},
+         {"mean_contact_force", mean},
+         {"contact_nodes", n_contact},
+         {"penetration", penetration}};
+    if (!guided)
+      for (unsigned int c = 0; c < dim; ++c)
+        if (c != a)
+          columns.emplace_back(std::string("impactor_velocity_") + "xyz"[c],
+                               velocity[c]);
+    const auto more = friction_columns();
+    columns.insert(columns.end(), more.begin(), more.end());
+    return columns;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::pair<std::string, double>>
+  RigidImpactor<dim>::friction_columns() const
+  {
+    if (friction_coefficient == 0)
+      return {};
+    std::vector<std::pair<std::string, double>> columns;
+    for (unsigned int c = 0; c < dim; ++c)
+      if (c != normal_axis)
+        columns.emplace_back(std::string("contact_force_") + "xyz"[c],
+                             -force[c]);
+    columns.emplace_back("pressure_force_sum", pressure_sum);
+    columns.emplace_back("friction_force_sum", friction_sum);
+    columns.emplace_back("sliding_nodes", n_sliding);
+    columns.emplace_back("impactor_friction_dissipation", dissipation);
+    return columns;
   }
 
 
@@ -312,6 +595,108 @@ namespace amfrac
       for (unsigned int d = 0; d < dim; ++d)
         (*t)[d] = values[k++];
     row_time = values[k];
+    for (unsigned int d = 0; d < dim; ++d)
+      if (guided && d != normal_axis && velocity[d] != 0)
+        throw InputError("Impactor/Guided",
+                         "the checkpoint's sphere moves across the face's "
+                         "normal (a run without the guide): resume it with "
+                         "Guided = false");
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  RigidImpactor<dim>::friction_state() const
+  {
+    // Per node: position, force, stick energy, contact flag, displacement.
+    constexpr unsigned int stride = 3 * dim + 2;
+    std::vector<double>    values;
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      {
+        const History &h = history[i];
+        for (unsigned int c = 0; c < dim; ++c)
+          values.push_back(nodes[i].position[c]);
+        for (unsigned int c = 0; c < dim; ++c)
+          values.push_back(h.force[c]);
+        values.push_back(h.stick_energy);
+        values.push_back(h.in_contact ? 1 : 0);
+        for (unsigned int c = 0; c < dim; ++c)
+          values.push_back(h.displacement[c]);
+      }
+    values = concatenate_over_ranks(values, comm);
+    std::vector<double> sorted;
+    sorted.reserve(values.size() + dim + 1);
+    for (const std::size_t k : order_by_position<dim>(values, stride))
+      sorted.insert(sorted.end(),
+                    values.begin() + k * stride,
+                    values.begin() + (k + 1) * stride);
+    for (unsigned int c = 0; c < dim; ++c)
+      sorted.push_back(committed_center[c]);
+    sorted.push_back(dissipation);
+    return sorted;
+  }
+
+
+
+  template <int dim>
+  void
+  RigidImpactor<dim>::set_friction_state(const std::vector<double> &values)
+  {
+    restore_history(values, true);
+  }
+
+
+
+  template <int dim>
+  void
+  RigidImpactor<dim>::restore_history(const std::vector<double> &values,
+                                      const bool                 require_all)
+  {
+    constexpr unsigned int stride = 3 * dim + 2;
+    AssertThrow(values.size() >= dim + 1
+                  && (values.size() - dim - 1) % stride == 0,
+                ExcMessage("the checkpoint's impactor friction state has "
+                           + std::to_string(values.size()) + " values"));
+    const std::size_t n_saved = (values.size() - dim - 1) / stride;
+    std::map<std::array<double, dim>, History> saved;
+    for (std::size_t k = 0; k < n_saved; ++k)
+      {
+        const double           *v = values.data() + k * stride;
+        std::array<double, dim> key;
+        History                 h;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            key[c]            = v[c];
+            h.force[c]        = v[dim + c];
+            h.displacement[c] = v[2 * dim + 2 + c];
+          }
+        h.stick_energy = v[2 * dim];
+        h.in_contact   = v[2 * dim + 1] > 0;
+        h.referenced   = true;
+        saved[key]     = h;
+      }
+    history.assign(nodes.size(), History());
+    bool missing = false;
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      {
+        const auto h = saved.find(key_of(nodes[i].position));
+        if (h != saved.end())
+          history[i] = h->second;
+        else
+          missing = true;
+      }
+    // On every rank alike, so that no rank goes on alone.
+    if (require_all && Utilities::MPI::max(missing ? 1 : 0, comm) > 0)
+      throw InputError("Impactor/Friction coefficient",
+                       "the checkpoint's friction history of the impactor "
+                       "has no entry for a node of this mesh's face");
+    trial_history      = history;
+    const double *tail = values.data() + n_saved * stride;
+    for (unsigned int c = 0; c < dim; ++c)
+      committed_center[c] = tail[c];
+    dissipation         = tail[dim];
+    pending_dissipation = 0;
   }
 
 

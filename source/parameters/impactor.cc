@@ -1,5 +1,7 @@
+#include <amfrac/parameters/expressions.h>
 #include <amfrac/parameters/impactor.h>
 #include <amfrac/parameters/input_error.h>
+#include <amfrac/parameters/parameters.h>
 #include <cmath>
 #include <deal.II/base/utilities.h>
 
@@ -27,10 +29,11 @@ namespace amfrac
         Patterns::Selection("free|prescribed"),
         "free: the sphere has a Mass and starts at Center with Velocity, and "
         "moves with the explicit time integration (Time/Time integration = "
-        "explicit). prescribed: its centre is Center + Velocity t, an "
-        "indenter driven through a static run (Time/Time integration = "
-        "static; the contact tangent enters Newton's matrix); the Mass is "
-        "not used.");
+        "explicit). prescribed: its centre is Center + Velocity t, or "
+        "Center + Path(t) if a Path is given (Velocity is then not used), "
+        "an indenter driven through a static run (Time/Time integration = "
+        "static; the contact tangent enters Newton's matrix); the Mass and "
+        "Guided are not used.");
       prm.declare_entry("Radius",
                         "5",
                         Patterns::Double(0),
@@ -67,6 +70,42 @@ namespace amfrac
         "a warning: the contact chatter of single nodes then gains energy; "
         "the seed's plate gained 38 % of the sphere's energy in 100 us "
         "with 5e6 on 1 mm cells, and 2e-6 with 5e5).");
+      prm.declare_entry(
+        "Guided",
+        "true",
+        Patterns::Bool(),
+        "Motion = free only. true: the sphere moves along the face's "
+        "normal only, like the guided striker of a drop-weight tower; a "
+        "guide takes the force across the normal. A quarter or half model "
+        "with symmetry planes through the sphere's path needs it: there "
+        "the model's half of the contact pushes the sphere sideways, which "
+        "the other half would cancel. false: it moves in every direction "
+        "(an oblique impact on a whole model); its rotation is held "
+        "either way.");
+      prm.declare_entry(
+        "Path",
+        "",
+        Patterns::Anything(),
+        "Motion = prescribed only: the centre's displacement from Center "
+        "[mm] as three expressions of the load parameter t separated by ';' "
+        "(e.g. '0; 0; -min(t, 0.03)' presses the sphere 0.03 mm into a z+ "
+        "face, then '0.5*max(t - 0.03, 0); 0; -min(t, 0.03)' also slides "
+        "it along x). Empty: Velocity t.");
+      prm.declare_entry(
+        "Friction coefficient",
+        "0",
+        Patterns::Double(0),
+        "Coulomb friction coefficient mu between the sphere and the face: "
+        "a node in contact sticks to the sphere's surface while its "
+        "tangential force is below mu times its normal force, and slides "
+        "at that force otherwise (dissipating). The sphere does not "
+        "rotate: it is a guided striker whose rotation is held.");
+      prm.declare_entry("Tangential penalty factor",
+                        "1",
+                        Patterns::Double(0),
+                        "Stick stiffness over the normal penalty: a "
+                        "sticking node's tangential force grows by this "
+                        "times its normal stiffness per unit slip.");
       prm.leave_subsection();
     }
 
@@ -75,7 +114,7 @@ namespace amfrac
     void
     Impactor::parse_parameters(ParameterHandler &prm, const unsigned int dim)
     {
-      const std::string path = "Impactor/";
+      const std::string section = "Impactor/";
       prm.enter_subsection("Impactor");
       face   = prm.get("Face");
       active = face != "none";
@@ -85,21 +124,54 @@ namespace amfrac
         Utilities::split_string_list(prm.get("Center")));
       velocity = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Velocity")));
-      penalty    = prm.get_double("Penalty");
-      prescribed = prm.get("Motion") == "prescribed";
+      penalty                     = prm.get_double("Penalty");
+      prescribed                  = prm.get("Motion") == "prescribed";
+      const std::string path_text = prm.get("Path");
+      path                        = split_expressions(path_text);
+      if (Utilities::trim(path_text).empty())
+        path.clear();
+      guided            = prm.get_bool("Guided");
+      friction          = prm.get_double("Friction coefficient");
+      tangential_factor = prm.get_double("Tangential penalty factor");
       prm.leave_subsection();
       if (!active)
         return;
       // In 2D (the cross-section, plane strain) the sphere is a cylinder
       // along the laminate's width: a circle in the x-y plane.
       require(dim == 3 || face[0] != 'z',
-              path + "Face",
+              section + "Face",
               "a 2D laminate has the faces x-, x+, y- and y+ (y is its "
               "thickness)");
       boundary_id = 2 * (face[0] - 'x') + (face[1] == '+' ? 1 : 0);
-      require(radius > 0, path + "Radius", "must be positive");
-      require(mass > 0, path + "Mass", "must be positive");
-      require(penalty > 0, path + "Penalty", "must be positive");
+      require(radius > 0, section + "Radius", "must be positive");
+      require(mass > 0, section + "Mass", "must be positive");
+      require(penalty > 0, section + "Penalty", "must be positive");
+      if (guided && !prescribed)
+        for (unsigned int d = 0; d < dim; ++d)
+          require(d == boundary_id / 2 || velocity[d] == 0,
+                  section + "Velocity",
+                  "a guided sphere (Guided = true) moves along the face's "
+                  "normal: its velocity across it must be 0, or set "
+                  "Guided = false");
+      require(friction == 0 || tangential_factor > 0,
+              section + "Tangential penalty factor",
+              "must be positive with friction");
+      require(path.empty() || prescribed,
+              section + "Path",
+              "a path prescribes the centre: set Motion = prescribed");
+      require(path.empty() || path.size() == 3,
+              section + "Path",
+              "needs three expressions separated by ';' (x; y; z of the "
+              "centre's displacement), found "
+                + std::to_string(path.size()));
+      // Malformed expressions fail here, before anything is written.
+      if (!path.empty())
+        {
+          if (dim == 2)
+            make_expression_function<2>(path, 3, "", section + "Path");
+          else
+            make_expression_function<3>(path, 3, "", section + "Path");
+        }
     }
   } // namespace parameters
 } // namespace amfrac

@@ -612,6 +612,9 @@ namespace amfrac
     // The friction history of contact between the bodies.
     if (body_contact)
       run.put("newton.body_contact", body_contact->state());
+    // The impactor's friction history (collective).
+    if (impactor && impactor->has_friction())
+      run.put("newton.impactor_friction", impactor->friction_state());
     if (parameters.nonlinear_solver.arc_length)
       {
         run.put("newton.arc_scale", newton->arc_scale);
@@ -691,6 +694,22 @@ namespace amfrac
                              "written by a run without contact");
           body_contact->set_state(run.get("newton.body_contact"));
         }
+      if (impactor && !impactor->has_friction()
+          && run.has("newton.impactor_friction"))
+        throw InputError("Impactor/Friction coefficient",
+                         "the checkpoint was written with friction between "
+                         "the sphere and the laminate; resume it with the "
+                         "same coefficient (its dissipation is in the "
+                         "balance)");
+      if (impactor && impactor->has_friction())
+        {
+          if (!run.has("newton.impactor_friction"))
+            throw InputError("Impactor/Friction coefficient",
+                             "the checkpoint has no friction history of "
+                             "the impactor: it was written by a run "
+                             "without friction");
+          impactor->set_friction_state(run.get("newton.impactor_friction"));
+        }
       if (parameters.nonlinear_solver.arc_length)
         {
           newton->arc_scale   = run.get_scalar("newton.arc_scale");
@@ -734,6 +753,8 @@ namespace amfrac
       run.put("explicit.impactor." + std::to_string(k), state.impactor[k]);
     if (!state.body_contact.empty())
       run.put("explicit.body_contact", state.body_contact);
+    if (!state.impactor_friction.empty())
+      run.put("explicit.impactor_friction", state.impactor_friction);
     for (const auto &[name, v] : state.vectors)
       save_vector(part, name, *v);
   }
@@ -782,6 +803,23 @@ namespace amfrac
                                  "was written by a run without one");
               state.impactor[k] = run.get_scalar(key);
             }
+        }
+      // The impactor's friction history.
+      if (parameters.impactor.active && parameters.impactor.friction == 0
+          && run.has("explicit.impactor_friction"))
+        throw InputError("Impactor/Friction coefficient",
+                         "the checkpoint was written with friction between "
+                         "the sphere and the laminate; resume it with the "
+                         "same coefficient (its dissipation is in the "
+                         "balance)");
+      if (parameters.impactor.active && parameters.impactor.friction > 0)
+        {
+          if (!run.has("explicit.impactor_friction"))
+            throw InputError("Impactor/Friction coefficient",
+                             "the checkpoint has no friction history of "
+                             "the impactor: it was written by a run "
+                             "without friction");
+          state.impactor_friction = run.get("explicit.impactor_friction");
         }
       // The friction history and last positions of the surface nodes.
       if (parameters.contact.active)

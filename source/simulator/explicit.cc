@@ -619,8 +619,10 @@ namespace amfrac
       double impactor_energy = 0;
       if (impactor)
         {
-          impactor_energy
-            = impactor->kinetic_energy() + impactor->contact_energy();
+          // The stick springs' energy is in the contact energy.
+          impactor_energy = impactor->kinetic_energy()
+                            + impactor->contact_energy()
+                            + impactor->friction_dissipation();
           columns.emplace_back("impactor_kinetic", impactor->kinetic_energy());
           columns.emplace_back("contact_energy", impactor->contact_energy());
           // Laminate and sphere together along the face normal.
@@ -682,6 +684,8 @@ namespace amfrac
         t = state.base_t + (state.steps - state.base_steps) * dt;
         if (impactor)
           impactor->set_state(state.impactor);
+        if (impactor && impactor->has_friction())
+          impactor->set_friction_state(state.impactor_friction);
         if (body_contact)
           body_contact->set_state(state.body_contact);
       }
@@ -728,6 +732,8 @@ namespace amfrac
       state.remeshing_energy = remeshing_energy;
       if (impactor)
         state.impactor = impactor->state();
+      if (impactor && impactor->has_friction())
+        state.impactor_friction = impactor->friction_state();
       if (body_contact)
         state.body_contact = body_contact->state();
       save_explicit(state, run, part);

@@ -973,6 +973,10 @@ namespace amfrac
                          + " mm); start it clear of the face");
     n.sphere_force  = impactor->force_on_laminate();
     n.sphere_center = impactor->position();
+    // The friction's slips count from the start of the path (a Path need
+    // not start at Center).
+    if (t == 0)
+      impactor->commit();
   }
 
 
@@ -985,8 +989,10 @@ namespace amfrac
     NewtonState &n = *newton;
     // What drives the sphere holds it in balance with the
     // laminate's push back, so it does the work F . dc by the trapezoidal
-    // rule.
+    // rule. At the converged state (the last evaluation may be a line
+    // search's), whose friction history the next step starts from.
     impactor->evaluate(solution, n.contact_force);
+    impactor->commit();
     const Tensor<1, dim> force = impactor->force_on_laminate();
     n.external_work += 0.5 * (n.sphere_force + force)
                        * (impactor->position() - n.sphere_center);
@@ -997,7 +1003,9 @@ namespace amfrac
     columns.emplace_back("contact_energy", impactor->contact_energy());
     columns.emplace_back("contact_nodes", impactor->contact_nodes());
     columns.emplace_back("penetration", impactor->penetration_depth());
-    return impactor->contact_energy();
+    const auto more = impactor->friction_columns();
+    columns.insert(columns.end(), more.begin(), more.end());
+    return impactor->contact_energy() + impactor->friction_dissipation();
   }
 
 

@@ -406,6 +406,68 @@ expect impactor_prescribed_explicit "Impactor/Motion" "$base
 $impactor
 $explicit
 $prescribed"
+# Friction and the prescribed path of the sphere.
+expect impactor_path_free "Impactor/Path" "$base
+$impactor
+$explicit
+subsection Impactor
+  set Path = 0; 0; -t
+end"
+expect impactor_path_count "Impactor/Path" "$base
+$impactor
+$prescribed
+subsection Impactor
+  set Path = 0; -t
+end"
+expect impactor_path_malformed "Impactor/Path" "$base
+$impactor
+$prescribed
+subsection Impactor
+  set Path = 0; 0; -t*(
+end"
+expect impactor_guided_velocity "Impactor/Velocity" "$base
+$impactor
+$explicit
+subsection Impactor
+  set Velocity = 1000, 0, -10000
+end"
+expect impactor_stick_factor "Impactor/Tangential penalty factor" "$base
+$impactor
+$prescribed
+subsection Impactor
+  set Friction coefficient = 0.3
+  set Tangential penalty factor = 0
+end"
+# Friction is keyed by position: a face that crosses a cohesive interface
+# (two copies of its nodes) is refused when the run sets the sphere up.
+expect impactor_friction_interface "Impactor/Friction coefficient" "set Dimension = 2
+subsection Geometry
+  set Stacking sequence = [0/90]
+  set Ply thickness = 1
+  set Length = 4
+  set Elements along length = 4
+end
+subsection Cohesive interfaces
+  set Interfaces = 0
+end
+subsection Boundary conditions
+  subsection x+
+    set Type = displacement
+  end
+end
+subsection Impactor
+  set Face = x-
+  set Motion = prescribed
+  set Center = -6, 1, 0
+  set Velocity = 1, 0, 0
+  set Friction coefficient = 0.3
+end
+subsection Time
+  set End time = 0.01
+end
+subsection Output
+  set Directory = out
+end"
 expect impactor_prescribed_overlap "Impactor/Center" "$base
 $impactor
 $prescribed

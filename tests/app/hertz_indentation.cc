@@ -53,23 +53,11 @@ namespace
   void
   flat(const std::string &prm, const std::string &workdir)
   {
-    const double R = 1e4, penalty = 1e6, d = 0.01;
-    // The corners lie sqrt(0.5) from the axis: the centre's height over the
-    // face at which they touch the sphere.
-    const double       height = std::sqrt(R * R - 0.5);
+    const double       R = 1e4, penalty = 1e6, d = 0.01;
     std::ostringstream text;
-    text << std::setprecision(17)
-         << "subsection Geometry\n  set Ply thickness = 1\n  set Length = 1\n"
-         << "  set Width = 1\n  set Elements along length = 1\n"
-         << "  set Elements along width = 1\n  set Elements per ply = 1\n"
-         << "  set Region refinements = 0\nend\n"
-         << "subsection Materials\n  set nu12 = 0\n  set nu13 = 0\n"
-         << "  set nu23 = 0\nend\n"
+    text << amfrac_test::one_cell_under_sphere(R, penalty)
          << "subsection Boundary conditions\n  subsection z-\n"
          << "    set Components = z\n  end\nend\n"
-         << "subsection Impactor\n  set Radius = " << R
-         << "\n  set Center = 0.5, 0.5, " << 1 + height
-         << "\n  set Penalty = " << penalty << "\nend\n"
          << "subsection Time\n  set End time = " << d
          << "\n  set Number of steps = 4\nend\n"
          << output(workdir);

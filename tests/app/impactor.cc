@@ -15,11 +15,22 @@
 //   of the sphere's energy, contact, the sphere slowed.
 // - wall_2d: the same in a 2D cross-section, where the sphere is a cylinder
 //   (per unit width) and the corner node's spring k = Penalty * h / 2.
-// usage: app_impactor wall|wall_2d|free|scene SCENE.prm COARSE.prm WORKDIR
+// - oblique_2d: a cylinder (free in every direction: Guided = false)
+//   strikes a block of 10 x 2 mm held at its bottom at 45 degrees, with
+//   friction mu = 0.3 and without: the balance with the friction's
+//   dissipation closes within 1 % of the cylinder's energy; with friction
+//   it dissipates and the tangential impulse is at most mu times the
+//   normal one (its sliding nodes each at mu times their normal force; the
+//   impulses from the cylinder's momentum), the cylinder leaves slower
+//   along x than without friction, which changes its x velocity by less
+//   than 5 % of the change with friction.
+// usage: app_impactor wall|wall_2d|free|scene|oblique_2d SCENE.prm
+//        COARSE.prm WORKDIR
 #include "../check.h"
 #include "scene.h"
 
 #include <amfrac/simulator/simulator.h>
+#include <array>
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <fstream>
@@ -147,6 +158,64 @@ namespace
     check_single_spring(simulator.history(), penalty * 0.5);
   }
 
+  /** The cylinder's velocity change along x and y over the run of the
+   * oblique impact with @p friction; its dissipation. */
+  std::array<double, 3>
+  oblique_impact(const double friction, const std::string &workdir)
+  {
+    std::ostringstream text;
+    text << "set Dimension = 2\nsubsection Geometry\n"
+         << "  set Stacking sequence = [0]\n  set Ply thickness = 2\n"
+         << "  set Length = 10\n  set Elements along length = 40\n"
+         << "  set Elements per ply = 8\nend\n"
+         << "subsection Materials\n  set E1 = 70000\n  set E2 = 70000\n"
+         << "  set E3 = 70000\n  set G12 = 26923\n  set G13 = 26923\n"
+         << "  set G23 = 26923\n  set nu12 = 0.3\n  set nu13 = 0.3\n"
+         << "  set nu23 = 0.3\n  set Density = 2.7e-9\nend\n"
+         << "subsection Boundary conditions\n  subsection y-\n"
+         << "    set Type = displacement\n  end\nend\n"
+         << "subsection Impactor\n  set Face = y+\n  set Radius = 5\n"
+         << "  set Guided = false\n  set Mass = " << mass
+         << "\n  set Center = 4, 7.001, 0\n  set Velocity = " << 0.5 * speed
+         << ", " << -0.5 * speed << ", 0\n  set Penalty = " << penalty
+         << "\n  set Friction coefficient = " << friction << "\nend\n"
+         << "subsection Time\n  set Time integration = explicit\n"
+         << "  set End time = 2e-5\n  set Number of steps = 40\nend\n"
+         << "subsection Output\n  set Directory = " << workdir
+         << "\n  set Field format = none\nend\n";
+    Simulator<2> simulator(parameters::Parameters::from_string(text.str()),
+                           MPI_COMM_WORLD);
+    simulator.run();
+    const History    &h       = simulator.history();
+    const double      energy0 = 0.5 * mass * 0.5 * speed * speed;
+    const std::size_t last    = h.n_rows() - 1;
+    double            balance = 0;
+    for (std::size_t r = 0; r < h.n_rows(); ++r)
+      balance = std::max(balance, std::abs(h.value(r, "balance_error")));
+    const double dvx = h.value(last, "impactor_velocity_x") - 0.5 * speed;
+    const double dvy = h.value(last, "impactor_velocity") + 0.5 * speed;
+    const double dissipated
+      = friction > 0 ? h.value(last, "impactor_friction_dissipation") : 0.;
+    std::cout << "mu = " << friction << ": balance " << balance / energy0
+              << " of the cylinder's energy, velocity change " << dvx << ", "
+              << dvy << " mm/s, dissipated " << dissipated / energy0
+              << " of the energy, contact force " << largest(h, "contact_force")
+              << " N/mm" << std::endl;
+    CHECK(balance < 0.01 * energy0);
+    CHECK(dvy > 0.5 * speed); // it bounced
+    return {{dvx, dvy, dissipated}};
+  }
+
+  void
+  oblique_2d(const std::string &workdir)
+  {
+    const auto with    = oblique_impact(0.3, workdir + "_friction");
+    const auto without = oblique_impact(0, workdir);
+    CHECK(with[2] > 0);
+    CHECK(with[0] < 0 && with[0] > -0.3 * with[1] * 1.01);
+    CHECK(std::abs(without[0]) < 0.05 * std::abs(with[0]));
+  }
+
   void
   free_plate(const std::string &prm, const std::string &workdir)
   {
@@ -217,6 +286,8 @@ main(int argc, char **argv)
         wall_2d(argv[4]);
       else if (which == "free")
         free_plate(argv[2], argv[4]);
+      else if (which == "oblique_2d")
+        oblique_2d(argv[4]);
       else
         scene(argv[2], argv[3], argv[4]);
     }

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <fstream>
+#include <iomanip>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -35,6 +36,27 @@ namespace amfrac_test
     std::stringstream text;
     text << in.rdbuf() << "\n" << appended << "\n";
     return amfrac::parameters::Parameters::from_string(text.str());
+  }
+
+  /** Appended to prm/hertz_indentation.prm: a 1 mm cube of one cell
+   * (nu = 0) under a sphere of radius @p R and contact @p penalty whose
+   * surface touches its four top corners together at t = 0 (they lie
+   * sqrt(0.5) from the sphere's axis). */
+  inline std::string
+  one_cell_under_sphere(const double R, const double penalty)
+  {
+    std::ostringstream text;
+    text << std::setprecision(17)
+         << "subsection Geometry\n  set Ply thickness = 1\n  set Length = 1\n"
+         << "  set Width = 1\n  set Elements along length = 1\n"
+         << "  set Elements along width = 1\n  set Elements per ply = 1\n"
+         << "  set Region refinements = 0\nend\n"
+         << "subsection Materials\n  set nu12 = 0\n  set nu13 = 0\n"
+         << "  set nu23 = 0\nend\n"
+         << "subsection Impactor\n  set Radius = " << R
+         << "\n  set Center = 0.5, 0.5, " << 1 + std::sqrt(R * R - 0.5)
+         << "\n  set Penalty = " << penalty << "\nend\n";
+    return text.str();
   }
 
   template <int dim>

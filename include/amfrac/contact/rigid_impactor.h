@@ -1,12 +1,15 @@
 #pragma once
 
+#include <algorithm>
 #include <amfrac/dofs/tied_copy_dofs.h>
 #include <amfrac/parameters/impactor.h>
 #include <array>
+#include <deal.II/base/function.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,14 +17,32 @@
 namespace amfrac
 {
   /**
-   * A rigid sphere that strikes one face of the laminate (issue 10, first
-   * step): node-to-sphere penalty contact without friction. A face node at
+   * A rigid sphere that strikes one face of the laminate (issue 10):
+   * node-to-sphere penalty contact with Coulomb friction. A face node at
    * x inside the sphere (gap g = |x - c| - R < 0) is pushed out along
    * n = (x - c) / |x - c| by the force -k g n with k = Penalty times the
    * node's share of the face area (the integral of its shape function over
    * the face), and the sphere feels the opposite. The contact is the
    * potential E_c = sum_i k_i g_i^2 / 2, so plate, sphere and contact
    * together keep their energy up to the time integration's error.
+   *
+   * Friction (Friction coefficient mu > 0): a node in contact is held to
+   * the sphere's surface by a stick spring k_t = factor k in the tangent
+   * plane. Its tangential force grows from the last committed one (turned
+   * into the current tangent plane) by -k_t s, where s is the tangential
+   * part of the node's displacement increment less the centre's, and is
+   * returned to the Coulomb limit mu k |g| when it exceeds it. The sphere
+   * translates only (a guided striker: its rotation is held), so the
+   * friction torque does no work. The dissipation of a step is the work of
+   * the friction force (trapezoidal) less the change of the stick
+   * springs' energy, which is part of contact_energy(); a node that leaves
+   * contact releases its spring's energy into the dissipation. Explicit
+   * runs commit the history at every evaluation; static runs evaluate
+   * trial states from the last commit() (the converged step).
+   *
+   * A guided sphere (the default) moves along the face's normal only: its
+   * acceleration across it is held at zero (a drop-weight striker, and
+   * what symmetry planes through its path require).
    *
    * The sphere moves with the laminate's central differences: kick() by
    * half a step with the acceleration of the last evaluate(), drift() by a
@@ -49,17 +70,21 @@ namespace amfrac
     void
     evaluate(const Vector &u, Vector &contact);
 
-    /** A prescribed sphere: its centre at time @p t, Center + Velocity t. */
+    /** A prescribed sphere: its centre at time @p t, Center + Velocity t
+     * or Center + Path(t). */
     void
-    move_to(const double t)
-    {
-      center = start + t * velocity;
-    }
+    move_to(const double t);
+
+    /** Static runs: keep the friction history of the last evaluate() (the
+     * converged state) as the reference of the next step's slips. */
+    void
+    commit();
 
     /** Static runs: the contact tangent at @p u (owned entries),
      * d(k g n)/du = k (n n^T + g / r (I - n n^T)) per node in contact with
-     * r = |x - c|, into @p tangent through @p constraints (hanging nodes
-     * hand it to their parents). Not compressed. */
+     * r = |x - c|, and with friction the stick spring's or the sliding
+     * force's (node_tangent()), into @p tangent through @p constraints
+     * (hanging nodes hand it to their parents). Not compressed. */
     void
     add_tangent(const Vector                    &u,
                 const AffineConstraints<double> &constraints,
@@ -168,9 +193,17 @@ namespace amfrac
      * along the inward normal (at t, and the mean since the last output
      * step: the sphere's momentum change over the interval, which the
      * chatter of single nodes does not blur), the nodes in contact and
-     * the deepest penetration. */
+     * the deepest penetration; with friction, the force's components in
+     * the face, the sums of the nodes' normal and friction forces, the
+     * sliding nodes and the dissipation. */
     std::vector<std::pair<std::string, double>>
     columns(const double t);
+
+    /** With friction: the force on the laminate in the face's plane, the
+     * sums of the nodes' normal and friction forces, the sliding nodes and
+     * the dissipation so far (none without friction). */
+    std::vector<std::pair<std::string, double>>
+    friction_columns() const;
 
     /** Centre, velocity and acceleration, and the velocity and time of
      * the last output step (for a checkpoint). */
@@ -178,6 +211,30 @@ namespace amfrac
     state() const;
     void
     set_state(const std::vector<double> &values);
+
+    /** Friction: the energy dissipated since the start (all ranks). */
+    double
+    friction_dissipation() const
+    {
+      return dissipation;
+    }
+
+    bool
+    has_friction() const
+    {
+      return friction_coefficient > 0;
+    }
+
+    /** The friction history of every node of all ranks, keyed by the
+     * nodes' positions, and the committed centre and dissipation (for a
+     * checkpoint; the same values on any number of ranks). Collective. */
+    std::vector<double>
+    friction_state() const;
+    /** Restore friction_state() on the current nodes (saved nodes no
+     * longer on the face are dropped). Throws on every rank if a node of
+     * the face has no entry. Collective. */
+    void
+    set_friction_state(const std::vector<double> &values);
 
   private:
     struct Node
@@ -187,21 +244,93 @@ namespace amfrac
       double                                   stiffness;
     };
 
-    /** The contact tangent of @p node at @p u (zero out of contact). */
-    Tensor<2, dim>
-    node_tangent(const Node &node, const Vector &u) const;
+    /** What the friction of a node keeps from the last commit: its
+     * tangential force and stick energy, whether it touched, and its
+     * displacement then. */
+    struct History
+    {
+      Tensor<1, dim> force;
+      double         stick_energy = 0;
+      bool           in_contact   = false;
+      Tensor<1, dim> displacement;
+      /** The displacement is that of an evaluation (false for a node new
+       * to the face: its first slip increment is zero). */
+      bool referenced = false;
+    };
 
-    MPI_Comm          comm;
-    double            radius, mass, penalty;
-    unsigned int      boundary_id, normal_axis;
-    double            inward; // -1 on a + face, +1 on a - face
-    std::vector<Node> nodes;
-    Tensor<1, dim>    center, velocity, acceleration, force;
+    /** The node's displacement since the commit less the centre's. */
+    Tensor<1, dim>
+    slip_increment(const unsigned int i, const Vector &u) const;
+
+    /** friction_state() into the history of the current nodes; a node it
+     * does not name starts afresh, or, if @p require_all, throws on every
+     * rank. Collective. */
+    void
+    restore_history(const std::vector<double> &values, const bool require_all);
+
+    /** Friction: throws if two face nodes (of any rank) share a position.
+     * Collective. */
+    void
+    refuse_shared_positions() const;
+
+    /** The stiffest spring of a node over k: the stick spring's factor
+     * if friction makes it stiffer than the normal one. */
+    double
+    stiffest() const
+    {
+      return friction_coefficient > 0 ? std::max(1., tangential_factor) : 1.;
+    }
+
+    /** The response of node @p i at @p u: normal n, pressure force
+     * p = -k g (0 out of contact), and with friction the old tangential
+     * force, the slip since the commit, the trial force and the returned
+     * one, the trial's length, the normal part of the trial before it is
+     * projected (for the tangent) and whether it slides. */
+    struct Response
+    {
+      Tensor<1, dim> n, old_force, slip, trial, friction;
+      double         gap = 0, distance = 0, pressure = 0, trial_norm = 0;
+      double         normal_part = 0;
+      bool           slipping    = false;
+    };
+    Response
+    respond(const unsigned int i, const Vector &u) const;
+
+    /** The contact tangent of node @p i at @p u (zero out of contact). */
+    Tensor<2, dim>
+    node_tangent(const unsigned int i, const Vector &u) const;
+
+    Tensor<1, dim>
+    displacement(const Node &node, const Vector &u) const;
+
+    MPI_Comm comm;
+    double   radius, mass, penalty;
+    double   friction_coefficient, tangential_factor;
+    bool     static_mode;
+    /** A free sphere moves along the face's normal only. */
+    bool guided;
+    /** Center + path(t) for a prescribed sphere (null: Velocity t). */
+    std::shared_ptr<Function<dim>> path;
+    unsigned int                   boundary_id, normal_axis;
+    double                         inward; // -1 on a + face, +1 on a - face
+    std::vector<Node>              nodes;
+    Tensor<1, dim>                 center, velocity, acceleration, force;
     /** Center at t = 0 (a prescribed sphere moves from it). */
     Tensor<1, dim> start;
     Tensor<1, dim> row_velocity;
     double         row_time = 0;
     double         energy = 0, penetration = 0;
     unsigned int   n_contact = 0;
+    /** Friction: the committed history per node, the last evaluation's
+     * (static runs keep it at commit()), the centre of the commit, the
+     * dissipation so far and that of the last evaluation since the
+     * commit, and the sums of the last evaluation. */
+    std::vector<History> history, trial_history;
+    /** setup() ran before (the same on every rank). */
+    bool           set_up = false;
+    Tensor<1, dim> committed_center;
+    double         dissipation = 0, pending_dissipation = 0;
+    double         pressure_sum = 0, friction_sum = 0;
+    unsigned int   n_sliding = 0;
   };
 } // namespace amfrac

@@ -13,7 +13,8 @@ namespace amfrac
     /** `subsection Impactor`: a rigid sphere that touches one face of the
      * laminate through penalty contact (RigidImpactor): free, with a mass
      * and an initial velocity (explicit runs), or prescribed, its centre
-     * moving at a constant velocity (static runs). */
+     * moving at a constant velocity or along a path (static runs); with
+     * Coulomb friction or without. */
     struct Impactor
     {
       bool active = false;
@@ -26,8 +27,17 @@ namespace amfrac
       std::vector<double> center, velocity;
       /** Contact pressure per unit penetration [N/mm^3]. */
       double penalty = 0;
-      /** The centre follows Center + Velocity t (static runs). */
+      /** The centre follows Center + Velocity t (static runs), or
+       * Center + Path(t). */
       bool prescribed = false;
+      /** Path: the centre's displacement from Center as expressions of t
+       * (one per component, `;`-separated); empty: Velocity t. */
+      std::vector<std::string> path;
+      /** Coulomb friction between the sphere and the face nodes, and the
+       * stick stiffness over the normal penalty. */
+      double friction = 0, tangential_factor = 1;
+      /** A free sphere moves along the face's normal only. */
+      bool guided = true;
 
       static void
       declare_parameters(ParameterHandler &prm);

@@ -493,8 +493,9 @@ namespace amfrac
       unsigned int  base_row         = 0;
       double        base_t           = 0;
       double        remeshing_energy = 0;
-      /** RigidImpactor::state() (empty without an impactor). */
-      std::vector<double> impactor;
+      /** RigidImpactor::state() (empty without an impactor), and its
+       * friction_state() (empty without friction). */
+      std::vector<double> impactor, impactor_friction;
       /** BodyContact::state() (empty without contact). */
       std::vector<double>             body_contact;
       std::map<std::string, Vector *> vectors;
@@ -911,8 +912,9 @@ namespace amfrac
      * must not touch the laminate. */
     void
     start_static_impactor(const double t);
-    /** The sphere's columns of a converged step, its driver's work added
-     * to the external work; returns the contact energy. */
+    /** The sphere's columns of a converged step (its friction history
+     * committed), its driver's work added to the external work; returns
+     * the contact energy and the friction's dissipation. */
     double
     add_static_impactor_columns(
       std::vector<std::pair<std::string, double>> &columns);
