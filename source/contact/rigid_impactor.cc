@@ -268,13 +268,12 @@ namespace amfrac
     r.normal_part                  = (stored - kt * increment) * r.n;
     r.trial                        = r.old_force - kt * r.slip;
     r.friction                     = r.trial;
-    r.trial_norm                   = r.trial.norm();
     const double limit             = friction_coefficient * r.pressure;
     // On the cone within round-off counts as sticking, so that the
     // decision does not depend on the order of sums (as in BodyContact).
-    r.slipping = r.trial_norm > limit * (1 + 1e-10);
+    r.slipping = r.trial.norm() > limit * (1 + 1e-10);
     if (r.slipping)
-      r.friction *= limit / r.trial_norm;
+      r.friction *= limit / r.trial.norm();
     return r;
   }
 
@@ -432,7 +431,7 @@ namespace amfrac
     const Tensor<2, dim> turn
       = Tensor<2, dim>(unit_symmetric_tensor<dim>()) - outer_product(t, t);
     return tangent + friction_coefficient * k * outer_product(t, r.n)
-           - (limit / r.trial_norm) * (turn * trial_gradient);
+           - (limit / r.trial.norm()) * (turn * trial_gradient);
   }
 
 

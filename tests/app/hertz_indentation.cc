@@ -43,13 +43,6 @@ namespace
 {
   const double E = 70000, nu = 0.3, radius = 5, H = 20;
 
-  std::string
-  output(const std::string &workdir)
-  {
-    return "subsection Output\n  set Directory = " + workdir
-           + "\n  set Field format = none\nend\n";
-  }
-
   void
   flat(const std::string &prm, const std::string &workdir)
   {
@@ -60,7 +53,7 @@ namespace
          << "    set Components = z\n  end\nend\n"
          << "subsection Time\n  set End time = " << d
          << "\n  set Number of steps = 4\nend\n"
-         << output(workdir);
+         << amfrac_test::history_only(workdir);
     const auto     simulator = amfrac_test::run_scene<3>(prm, text.str());
     const History &h         = simulator->history();
     CHECK(h.n_rows() == 4);
@@ -105,11 +98,12 @@ namespace
   void
   hertz(const std::string &prm, const std::string &workdir)
   {
-    const auto     simulator = amfrac_test::run_scene<3>(prm, output(workdir));
-    const History &h         = simulator->history();
-    const double   Es        = E / (1 - nu * nu);
-    const double   penalty   = 1e8;
-    const double   cell      = 5. / 128; // 7 refinements of 5 mm cells
+    const auto simulator
+      = amfrac_test::run_scene<3>(prm, amfrac_test::history_only(workdir));
+    const History &h       = simulator->history();
+    const double   Es      = E / (1 - nu * nu);
+    const double   penalty = 1e8;
+    const double   cell    = 5. / 128; // 7 refinements of 5 mm cells
     CHECK(h.n_rows() == 12);
     // Least squares d = alpha F^(2/3) + C F: the normal equations.
     double aa = 0, ab = 0, bb = 0, ad = 0, bd = 0;
@@ -160,11 +154,12 @@ namespace
   void
   cylinder(const std::string &prm, const std::string &workdir)
   {
-    const auto     simulator = amfrac_test::run_scene<2>(prm, output(workdir));
-    const History &h         = simulator->history();
-    const double   Es        = E / (1 - nu * nu);
-    const double   penalty   = 1e8;
-    const double   cell      = 5. / 256; // 8 refinements of 5 mm cells
+    const auto simulator
+      = amfrac_test::run_scene<2>(prm, amfrac_test::history_only(workdir));
+    const History &h       = simulator->history();
+    const double   Es      = E / (1 - nu * nu);
+    const double   penalty = 1e8;
+    const double   cell    = 5. / 256; // 8 refinements of 5 mm cells
     CHECK(h.n_rows() == 10);
     for (std::size_t r = 0; r < h.n_rows(); ++r)
       {

@@ -49,13 +49,6 @@ namespace
 {
   const double mu = 0.3;
 
-  std::string
-  output(const std::string &workdir)
-  {
-    return "subsection Output\n  set Directory = " + workdir
-           + "\n  set Field format = none\nend\n";
-  }
-
   void
   flat(const std::string &prm, const std::string &workdir)
   {
@@ -71,7 +64,7 @@ namespace
          << "\n  set Friction coefficient = " << mu << "\nend\n"
          << "subsection Time\n  set End time = " << d + 0.05
          << "\n  set Number of steps = 12\nend\n"
-         << output(workdir);
+         << amfrac_test::history_only(workdir);
     const auto     simulator = amfrac_test::run_scene<3>(prm, text.str());
     const History &h         = simulator->history();
     CHECK(h.n_rows() == 12);
@@ -125,8 +118,9 @@ namespace
   void
   cylinder(const std::string &prm, const std::string &workdir)
   {
-    const auto     simulator = amfrac_test::run_scene<2>(prm, output(workdir));
-    const History &h         = simulator->history();
+    const auto simulator
+      = amfrac_test::run_scene<2>(prm, amfrac_test::history_only(workdir));
+    const History &h    = simulator->history();
     const double   cell = 5. / 256, E = 70000, nu = 0.3, R = 5;
     // Steps may be cut where the drag starts.
     CHECK(h.n_rows() >= 16u);

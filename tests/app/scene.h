@@ -38,6 +38,14 @@ namespace amfrac_test
     return amfrac::parameters::Parameters::from_string(text.str());
   }
 
+  /** Output of @p workdir's history only (no field files). */
+  inline std::string
+  history_only(const std::string &workdir)
+  {
+    return "subsection Output\n  set Directory = " + workdir
+           + "\n  set Field format = none\nend\n";
+  }
+
   /** Appended to prm/hertz_indentation.prm: a 1 mm cube of one cell
    * (nu = 0) under a sphere of radius @p R and contact @p penalty whose
    * surface touches its four top corners together at t = 0 (they lie

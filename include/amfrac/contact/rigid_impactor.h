@@ -284,12 +284,12 @@ namespace amfrac
     /** The response of node @p i at @p u: normal n, pressure force
      * p = -k g (0 out of contact), and with friction the old tangential
      * force, the slip since the commit, the trial force and the returned
-     * one, the trial's length, the normal part of the trial before it is
-     * projected (for the tangent) and whether it slides. */
+     * one, the normal part of the trial before it is projected (for the
+     * tangent) and whether it slides. */
     struct Response
     {
       Tensor<1, dim> n, old_force, slip, trial, friction;
-      double         gap = 0, distance = 0, pressure = 0, trial_norm = 0;
+      double         gap = 0, distance = 0, pressure = 0;
       double         normal_part = 0;
       bool           slipping    = false;
     };
