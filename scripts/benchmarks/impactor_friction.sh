@@ -13,10 +13,8 @@ set -euo pipefail
 amfrac=$(realpath "$1") out=$(realpath -m "$2") repeat=${3:-3}
 here=$(cd "$(dirname "$0")/../.." && pwd)
 work=$(mktemp -d)
-median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
-section() { # LOG NAME -> the wall time of TimerOutput's section NAME
-  awk -F'|' -v name="$2" '{gsub(/^ +| +$/, "", $2)} $2 == name {split($4, a, "s"); print a[1] + 0; exit}' "$1"
-}
+# shellcheck source=common.sh
+source "$here/scripts/benchmarks/common.sh"
 column() { # CSV NAME -> the last row's value of NAME
   awk -F, -v name="$2" 'NR == 1 {for (i = 1; i <= NF; ++i) if ($i == name) c = i}
     END {print $c}' "$1"

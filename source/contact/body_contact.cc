@@ -649,7 +649,7 @@ namespace amfrac
     for (unsigned int s = 0; s < nodes.size(); ++s)
       {
         const Point<dim> &x = positions[s];
-        Pair              best{s, 0, Point<dim - 1>(), Tensor<1, dim>(), 0};
+        Pair              best{s, 0, Point<dim - 1>(), Tensor<1, dim>(), 0, {}};
         bool              found = false, best_clamped = false;
         for (unsigned int c = candidate_start[s]; c < candidate_start[s + 1];
              ++c)
@@ -684,7 +684,7 @@ namespace amfrac
                 && ((clamped && !best_clamped)
                     || (clamped == best_clamped && -gap >= -best.gap)))
               continue;
-            best         = Pair{s, candidates[c], xi, n, gap};
+            best         = Pair{s, candidates[c], xi, n, gap, {}};
             best_clamped = clamped;
             found        = true;
           }

@@ -16,18 +16,21 @@ namespace amfrac
 {
   namespace
   {
-    /** A node's position at @p u less the centre, its length and the gap
-     * to the sphere (negative inside). */
+    /** A node's position at @p u less its closest point on the axis (the
+     * centre of a sphere: @p axis zero), its length and the gap to the
+     * surface (negative inside). */
     template <int dim, typename Node, typename Vector>
     std::tuple<Tensor<1, dim>, double, double>
     offset(const Node           &node,
            const Vector         &u,
            const Tensor<1, dim> &center,
+           const Tensor<1, dim> &axis,
            const double          radius)
     {
       Tensor<1, dim> d;
       for (unsigned int c = 0; c < dim; ++c)
         d[c] = node.position[c] + u(node.dofs[c]) - center[c];
+      d -= (d * axis) * axis;
       const double distance = d.norm();
       return {d, distance, distance - radius};
     }
@@ -92,6 +95,9 @@ namespace amfrac
                 ExcInternalError());
     for (unsigned int d = 0; d < dim; ++d)
       center[d] = p.center[d], velocity[d] = p.velocity[d];
+    if (p.cylinder && dim == 3)
+      for (unsigned int d = 0; d < dim; ++d)
+        axis[d] = p.axis[d];
     row_velocity     = velocity;
     start            = center;
     committed_center = center;
@@ -247,7 +253,7 @@ namespace amfrac
   {
     const Node &node = nodes[i];
     Response    r;
-    const auto [d, distance, gap] = offset(node, u, center, radius);
+    const auto [d, distance, gap] = offset(node, u, center, axis, radius);
     if (gap >= 0 || distance == 0)
       return r;
     r.n        = d / distance;
@@ -411,17 +417,21 @@ namespace amfrac
     const double         k       = nodes[i].stiffness;
     const Tensor<2, dim> normal  = outer_product(r.n, r.n);
     const Tensor<2, dim> in_face = unit_symmetric_tensor<dim>() - normal;
-    // The gap's curvature term softens the tangential directions: a node
-    // pressed in by |g| slides around the sphere of radius r.
-    Tensor<2, dim> tangent = k * (normal + (r.gap / r.distance) * in_face);
+    // The normal turns with the node across the axis only, dn/du = Q / r
+    // with Q = P less the axis' direction (P for a sphere).
+    const Tensor<2, dim> curved = in_face - outer_product(axis, axis);
+    // The gap's curvature term softens the curved directions: a node
+    // pressed in by |g| slides around the sphere or cylinder of radius r.
+    Tensor<2, dim> tangent = k * (normal + (r.gap / r.distance) * curved);
     if (friction_coefficient == 0)
       return tangent;
     // The trial force T = P(n) v, v = f_old - k_t (du - dc), turns with
-    // the normal, dn/du = P / r: dT/du = -k_t P - (n (x) T + (n . v) P) / r.
+    // the normal: dT/du = -k_t P - (n (x) Q T + (n . v) Q) / r.
     const double         kt = tangential_factor * k;
     const Tensor<2, dim> trial_gradient
       = -kt * in_face
-        - (outer_product(r.n, r.trial) + r.normal_part * in_face) / r.distance;
+        - (outer_product(r.n, curved * r.trial) + r.normal_part * curved)
+            / r.distance;
     if (!r.slipping)
       return tangent - trial_gradient;
     // Sliding: the force mu p t with t = T / |T|; p grows with the

@@ -17,9 +17,9 @@ namespace amfrac
         "Face",
         "none",
         Patterns::Selection("none|x-|x+|y-|y+|z-|z+"),
-        "A rigid sphere strikes or indents this face of the laminate: the "
-        "face's nodes inside the sphere are pushed out by a penalty "
-        "pressure, and the sphere feels the opposite force. In 2D (the "
+        "A rigid sphere (or cylinder, see Shape) strikes or indents this "
+        "face of the laminate: the face's nodes inside it are pushed out by "
+        "a penalty pressure, and it feels the opposite force. In 2D (the "
         "cross-section, plane strain) it is a cylinder along the width, "
         "x and y the first two components of Center and Velocity (the third "
         "is not used), its forces per unit width. none: no impactor.");
@@ -37,24 +37,42 @@ namespace amfrac
       prm.declare_entry("Radius",
                         "5",
                         Patterns::Double(0),
-                        "Radius of the sphere [mm].");
+                        "Radius of the sphere or cylinder [mm].");
+      prm.declare_entry(
+        "Shape",
+        "sphere",
+        Patterns::Selection("sphere|cylinder"),
+        "sphere: a ball (a point contact). cylinder: a roller or a "
+        "cylindrical loading nose along Axis, unbounded in length (a line "
+        "contact across the whole laminate: give it the length of the "
+        "modelled width). Center is a point of its axis. In 2D both are "
+        "the cylinder along the width.");
+      prm.declare_entry(
+        "Axis",
+        "0, 1, 0",
+        Patterns::List(Patterns::Double(), 3, 3),
+        "Shape = cylinder in 3D: the direction of the cylinder's axis (any "
+        "length), which must lie in the plane of Face (e.g. 0, 1, 0 on a "
+        "z+ face: a line load across y; 1, 1, 0: at 45 degrees).");
       prm.declare_entry("Mass",
                         "1e-6",
                         Patterns::Double(0),
                         "Mass of the sphere as modelled [t]: in a quarter "
                         "model with two symmetry planes through the "
                         "sphere's path, a quarter of its mass (a steel "
-                        "sphere of 5 mm radius: 4.1e-6 t). In 2D, the "
+                        "sphere of 5 mm radius: 4.1e-6 t). A 3D cylinder: "
+                        "the mass of the striker that it models. In 2D, the "
                         "cylinder's mass per unit width [t/mm].");
       prm.declare_entry("Center",
                         "0, 0, 7",
                         Patterns::List(Patterns::Double(), 3, 3),
-                        "Position of the centre at t = 0 [mm]; the sphere "
-                        "must not overlap the laminate then.");
+                        "Position of the sphere's centre (a point of the "
+                        "cylinder's axis) at t = 0 [mm]; the impactor must "
+                        "not overlap the laminate then.");
       prm.declare_entry("Velocity",
                         "0, 0, -10000",
                         Patterns::List(Patterns::Double(), 3, 3),
-                        "Velocity of the sphere at t = 0 [mm/s] "
+                        "Velocity of the impactor at t = 0 [mm/s] "
                         "(-10000: 10 m/s towards -z); with Motion = "
                         "prescribed its constant velocity [mm per unit of "
                         "the load parameter t].");
@@ -112,13 +130,40 @@ namespace amfrac
 
 
     void
+    Impactor::check_axis(const unsigned int dim)
+    {
+      // In 2D the circle already is the cylinder along the width.
+      if (!cylinder || dim == 2)
+        {
+          axis.assign(3, 0.);
+          return;
+        }
+      const double length
+        = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+      require(length > 0, "Impactor/Axis", "must not be the zero vector");
+      for (double &a : axis)
+        a /= length;
+      // A cylinder standing on the face would touch it with its flat end,
+      // which this contact (the curved side only) does not model.
+      require(std::abs(axis[boundary_id / 2]) < 1e-12,
+              "Impactor/Axis",
+              "must lie in the plane of Impactor/Face " + face
+                + " (its component along the face's normal must be 0)");
+    }
+
+
+
+    void
     Impactor::parse_parameters(ParameterHandler &prm, const unsigned int dim)
     {
       const std::string section = "Impactor/";
       prm.enter_subsection("Impactor");
-      face   = prm.get("Face");
-      active = face != "none";
-      radius = prm.get_double("Radius");
+      face     = prm.get("Face");
+      active   = face != "none";
+      radius   = prm.get_double("Radius");
+      cylinder = prm.get("Shape") == "cylinder";
+      axis     = Utilities::string_to_double(
+        Utilities::split_string_list(prm.get("Axis")));
       mass   = prm.get_double("Mass");
       center = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Center")));
@@ -144,13 +189,14 @@ namespace amfrac
               "thickness)");
       boundary_id = 2 * (face[0] - 'x') + (face[1] == '+' ? 1 : 0);
       require(radius > 0, section + "Radius", "must be positive");
+      check_axis(dim);
       require(mass > 0, section + "Mass", "must be positive");
       require(penalty > 0, section + "Penalty", "must be positive");
       if (guided && !prescribed)
         for (unsigned int d = 0; d < dim; ++d)
           require(d == boundary_id / 2 || velocity[d] == 0,
                   section + "Velocity",
-                  "a guided sphere (Guided = true) moves along the face's "
+                  "a guided impactor (Guided = true) moves along the face's "
                   "normal: its velocity across it must be 0, or set "
                   "Guided = false");
       require(friction == 0 || tangential_factor > 0,

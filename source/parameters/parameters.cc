@@ -1628,7 +1628,7 @@ namespace amfrac
                          "ends runs on the static Newton path (cohesive "
                          "interfaces, crack insertion, total Lagrangian "
                          "kinematics, plastic plies or a prescribed "
-                         "sphere), and this run is not one: shorten "
+                         "impactor), and this run is not one: shorten "
                          "Time/End time instead");
       if (adaptivity.during_history() && cohesive.interfaces.empty()
           && ((!cracks.active && !time.explicit_dynamics && !plastic_plies)
@@ -1845,12 +1845,12 @@ namespace amfrac
       const std::string face = "Impactor/Face";
       require(!impactor.prescribed || !time.explicit_dynamics,
               "Impactor/Motion",
-              "a prescribed sphere is an indenter for static runs: set "
+              "a prescribed impactor is an indenter for static runs: set "
               "Time/Time integration = static, or Motion = free for an "
               "impact");
       require(impactor.prescribed || time.explicit_dynamics,
               "Impactor/Motion",
-              "a free sphere moves with the explicit time integration: set "
+              "a free impactor moves with the explicit time integration: set "
               "Time/Time integration = explicit, or Motion = prescribed for "
               "a static indentation");
       require(!geometry.in_plane,
@@ -1863,7 +1863,7 @@ namespace amfrac
           require(!nonlinear_solver.arc_length
                     && !nonlinear_solver.dissipation_control,
                   "Nonlinear solver/Control",
-                  "a prescribed sphere is driven by t: use Control = "
+                  "a prescribed impactor is driven by t: use Control = "
                   "displacement with an Impactor");
           require(!buckling.active(),
                   "Buckling/Number of modes",
@@ -1877,7 +1877,7 @@ namespace amfrac
         }
       require(!adaptivity.during_history() || time.explicit_dynamics,
               face,
-              "a prescribed sphere cannot be combined yet with a mesh that "
+              "a prescribed impactor cannot be combined yet with a mesh that "
               "adapts during a static run (Refine every, Error threshold, "
               "Process zone elements: in 3D they refine along the plies "
               "only); refine the contact zone with Geometry/Refinement "

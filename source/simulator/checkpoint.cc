@@ -698,7 +698,7 @@ namespace amfrac
           && run.has("newton.impactor_friction"))
         throw InputError("Impactor/Friction coefficient",
                          "the checkpoint was written with friction between "
-                         "the sphere and the laminate; resume it with the "
+                         "the impactor and the laminate; resume it with the "
                          "same coefficient (its dissipation is in the "
                          "balance)");
       if (impactor && impactor->has_friction())
@@ -809,7 +809,7 @@ namespace amfrac
           && run.has("explicit.impactor_friction"))
         throw InputError("Impactor/Friction coefficient",
                          "the checkpoint was written with friction between "
-                         "the sphere and the laminate; resume it with the "
+                         "the impactor and the laminate; resume it with the "
                          "same coefficient (its dissipation is in the "
                          "balance)");
       if (parameters.impactor.active && parameters.impactor.friction > 0)

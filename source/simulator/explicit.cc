@@ -269,7 +269,7 @@ namespace amfrac
       = 2 * M_PI / (std::sqrt(impactor.node_frequency_squared(mass)) * dt);
     pcout << "  contact: " << steps
           << " time steps per oscillation of the stiffest face node against "
-             "the sphere";
+             "the impactor";
     if (steps < 10)
       pcout << "; WARNING: below 10 the contact chatter of single nodes "
                "gains energy (watch balance_error); a lower Impactor/Penalty "
@@ -701,10 +701,11 @@ namespace amfrac
         if (impactor)
           {
             if (impactor->penetration_depth() > 0)
-              throw InputError("Impactor/Center",
-                               "the sphere overlaps the laminate at t = 0 (by "
-                                 + std::to_string(impactor->penetration_depth())
-                                 + " mm); start it clear of the face");
+              throw InputError(
+                "Impactor/Center",
+                "the impactor overlaps the laminate at t = 0 (by "
+                  + std::to_string(impactor->penetration_depth())
+                  + " mm); start it clear of the face");
             initial_energy += impactor->kinetic_energy();
           }
         postprocess(0, t, reaction, ledger_row(t));

@@ -968,7 +968,7 @@ namespace amfrac
     if (t == 0
         && impactor->penetration_depth() > 1e-12 * parameters.impactor.radius)
       throw InputError("Impactor/Center",
-                       "the sphere overlaps the laminate at t = 0 (by "
+                       "the impactor overlaps the laminate at t = 0 (by "
                          + std::to_string(impactor->penetration_depth())
                          + " mm); start it clear of the face");
     n.sphere_force  = impactor->force_on_laminate();

@@ -6,6 +6,10 @@
 //   largest penetration v sqrt(m / k) and force v sqrt(m k) within 1 %,
 //   contact for pi sqrt(m / k) within 2 %, rebound at the impact speed
 //   within 1 % (elastic), energy balance within 1 % of the sphere's energy;
+// - wall_cylinder: the same held plate struck by a cylinder along y
+//   (Shape = cylinder) above the edge x = 0: the 11 nodes of that edge
+//   touch together, two corners of h^2 / 4 and nine of h^2 / 2, a single
+//   spring k = 5 Penalty h^2 with the same checks (and 11 nodes);
 // - free: the same plate free to move along z (only the symmetry planes
 //   held): the momentum of plate and sphere together stays that of t = 0
 //   to 1e-9, the balance closes to 1 % of the initial energy, and the
@@ -24,7 +28,8 @@
 //   impulses from the cylinder's momentum), the cylinder leaves slower
 //   along x than without friction, which changes its x velocity by less
 //   than 5 % of the change with friction.
-// usage: app_impactor wall|wall_2d|free|scene|oblique_2d SCENE.prm
+// usage: app_impactor wall|wall_cylinder|wall_2d|free|scene|oblique_2d
+//        SCENE.prm
 //        COARSE.prm WORKDIR
 #include "../check.h"
 #include "scene.h"
@@ -80,7 +85,9 @@ namespace
    * rebound at the impact speed within 1 %, the balance within 1 % of the
    * sphere's energy. */
   void
-  check_single_spring(const History &h, const double k)
+  check_single_spring(const History     &h,
+                      const double       k,
+                      const unsigned int n_nodes = 1)
   {
     const double depth        = speed * std::sqrt(mass / k);
     const double force        = speed * std::sqrt(mass * k);
@@ -89,7 +96,8 @@ namespace
     double       last_contact = 0, energy = 0;
     for (std::size_t r = 0; r < h.n_rows(); ++r)
       {
-        CHECK(h.value(r, "contact_nodes") <= 1);
+        CHECK(h.value(r, "contact_nodes") == 0
+              || h.value(r, "contact_nodes") == n_nodes);
         if (h.value(r, "contact_nodes") > 0)
           last_contact = h.value(r, "time");
         energy = std::max(energy, std::abs(h.value(r, "balance_error")));
@@ -110,7 +118,7 @@ namespace
   }
 
   void
-  wall(const std::string &prm, const std::string &workdir)
+  wall(const std::string &prm, const std::string &workdir, const bool cylinder)
   {
     std::string held;
     for (const char *face : {"x-", "x+", "y-", "y+", "z-", "z+"})
@@ -118,11 +126,15 @@ namespace
               + face
               + "\n    set Type = displacement\n    set Components = "
                 "x, y, z\n  end\nend\n";
-    const auto simulator
-      = amfrac_test::run_scene<3>(prm,
-                                  small_plate(1.2e-5, 300, workdir) + held);
-    // The corner node's quarter cell.
-    check_single_spring(simulator->history(), penalty * 0.25);
+    const std::string roller = "subsection Impactor\n  set Shape = cylinder\n"
+                               "  set Axis = 0, 1, 0\nend\n";
+    const auto        simulator = amfrac_test::run_scene<3>(
+      prm, small_plate(1.2e-5, 300, workdir) + held + (cylinder ? roller : ""));
+    // The corner node's quarter cell, or the edge's nodes.
+    if (cylinder)
+      check_single_spring(simulator->history(), penalty * 5, 11);
+    else
+      check_single_spring(simulator->history(), penalty * 0.25);
   }
 
   /** The same in 2D: a cylinder (per unit width) on the held cross-section
@@ -277,11 +289,12 @@ main(int argc, char **argv)
   try
     {
       AssertThrow(argc == 5,
-                  ExcMessage("usage: app_impactor wall|wall_2d|free|scene "
-                             "SCENE.prm COARSE.prm WORKDIR"));
+                  ExcMessage("usage: app_impactor wall|wall_cylinder|"
+                             "wall_2d|free|scene|oblique_2d SCENE.prm "
+                             "COARSE.prm WORKDIR"));
       const std::string which = argv[1];
-      if (which == "wall")
-        wall(argv[2], argv[4]);
+      if (which == "wall" || which == "wall_cylinder")
+        wall(argv[2], argv[4], which == "wall_cylinder");
       else if (which == "wall_2d")
         wall_2d(argv[4]);
       else if (which == "free")

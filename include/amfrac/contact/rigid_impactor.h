@@ -17,7 +17,9 @@
 namespace amfrac
 {
   /**
-   * A rigid sphere that strikes one face of the laminate (issue 10):
+   * A rigid sphere that strikes one face of the laminate (issue 10), or a
+   * cylinder of unbounded length along an axis in the face's plane (then
+   * read "its closest point on the axis" for "the centre" below):
    * node-to-sphere penalty contact with Coulomb friction. A face node at
    * x inside the sphere (gap g = |x - c| - R < 0) is pushed out along
    * n = (x - c) / |x - c| by the force -k g n with k = Penalty times the
@@ -315,6 +317,8 @@ namespace amfrac
     double                         inward; // -1 on a + face, +1 on a - face
     std::vector<Node>              nodes;
     Tensor<1, dim>                 center, velocity, acceleration, force;
+    /** A cylinder's unit axis (zero: a sphere, or the circle in 2D). */
+    Tensor<1, dim> axis;
     /** Center at t = 0 (a prescribed sphere moves from it). */
     Tensor<1, dim> start;
     Tensor<1, dim> row_velocity;

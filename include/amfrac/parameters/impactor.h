@@ -10,9 +10,9 @@ namespace amfrac
   {
     using namespace dealii;
 
-    /** `subsection Impactor`: a rigid sphere that touches one face of the
-     * laminate through penalty contact (RigidImpactor): free, with a mass
-     * and an initial velocity (explicit runs), or prescribed, its centre
+    /** `subsection Impactor`: a rigid sphere or cylinder that touches one face
+     * of the laminate through penalty contact (RigidImpactor): free, with a
+     * mass and an initial velocity (explicit runs), or prescribed, its centre
      * moving at a constant velocity or along a path (static runs); with
      * Coulomb friction or without. */
     struct Impactor
@@ -22,7 +22,11 @@ namespace amfrac
       std::string  face;
       unsigned int boundary_id = 0;
       double       radius      = 0;
-      double       mass        = 0;
+      /** A cylinder along the unit vector axis (in the face's plane), or a
+       * sphere (axis zero; always in 2D). */
+      bool                cylinder = false;
+      std::vector<double> axis;
+      double              mass = 0;
       /** Initial centre and velocity (3 components). */
       std::vector<double> center, velocity;
       /** Contact pressure per unit penetration [N/mm^3]. */
@@ -43,6 +47,12 @@ namespace amfrac
       declare_parameters(ParameterHandler &prm);
       void
       parse_parameters(ParameterHandler &prm, const unsigned int dim);
+
+    private:
+      /** Normalizes a 3D cylinder's axis and refuses one off the face's
+       * plane; zero for a sphere. */
+      void
+      check_axis(const unsigned int dim);
     };
   } // namespace parameters
 } // namespace amfrac
