@@ -1882,10 +1882,20 @@ namespace amfrac
               "Process zone elements: in 3D they refine along the plies "
               "only); refine the contact zone with Geometry/Refinement "
               "region");
-      require(!cracks.active,
+      // Explicit runs regroup the impactor's nodes after an insertion; a
+      // static run would need the insertion's re-solve with the contact.
+      require(!cracks.active || time.explicit_dynamics,
               face,
-              "the impactor cannot be combined yet with crack insertion "
-              "(Crack insertion/Criterion)");
+              "a prescribed impactor cannot be combined yet with crack "
+              "insertion (Crack insertion/Criterion) in a static run; a "
+              "free one in an explicit run can");
+      // The friction history is keyed by a node's position, which the
+      // copies of a split node share.
+      require(!cracks.active || impactor.friction == 0,
+              "Impactor/Friction coefficient",
+              "friction between the impactor and a laminate that cracks "
+              "(Crack insertion/Criterion) is not supported yet: set it to "
+              "0");
       require(time.mass_scaling_step == 0,
               face,
               "mass scaling (Time/Mass scaling time step) would change the "

@@ -909,8 +909,8 @@ namespace amfrac
               {
                 TimerOutput::Scope scope(timer, "crack insertion");
                 const double       before = kinetic_energy() + strain_energy
-                                      + interface_work()
-                                      + body_contact_energy();
+                                      + interface_work() + body_contact_energy()
+                                      + sphere_contact_energy();
                 insert_explicit_cracks(chosen,
                                        {&solution, &velocity, &last_good});
                 layout(false);
@@ -921,10 +921,16 @@ namespace amfrac
                   body_contact->setup(dof_layer,
                                       released_faces(),
                                       paired_faces());
+                // A split node's copies share its face area, so each
+                // takes its part of the contact spring: the contact
+                // energy stays.
+                if (impactor)
+                  impactor->setup(dof_layer);
                 update_damping();
                 evaluate(t);
                 const double after = kinetic_energy() + strain_energy
-                                     + interface_work() + body_contact_energy();
+                                     + interface_work() + body_contact_energy()
+                                     + sphere_contact_energy();
                 log_crack_event(
                   {{"time", t},
                    {"step", static_cast<double>(n)},

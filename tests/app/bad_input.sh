@@ -568,9 +568,20 @@ end
 subsection Adaptivity
   set Refine every = 1
 end"
-expect impactor_cracks "Impactor/Face" "$base
+# Crack insertion with a free impactor (explicit), not with a prescribed
+# one (static) or with the impactor's friction.
+expect impactor_cracks_static "Impactor/Face" "$base
+$impactor
+$prescribed
+subsection Crack insertion
+  set Criterion = hoffman
+end"
+expect impactor_cracks_friction "Impactor/Friction coefficient" "$base
 $impactor
 $explicit
+subsection Impactor
+  set Friction coefficient = 0.3
+end
 subsection Crack insertion
   set Criterion = hoffman
 end"

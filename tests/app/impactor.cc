@@ -28,7 +28,14 @@
 //   impulses from the cylinder's momentum), the cylinder leaves slower
 //   along x than without friction, which changes its x velocity by less
 //   than 5 % of the change with friction.
-// usage: app_impactor wall|wall_cylinder|wall_2d|free|scene|oblique_2d
+// - cracks_2d: prm/impact_beam_2d.prm's first 120 us (a cylinder at 4 m/s
+//   on a cross-ply beam whose bottom 90-degree plies crack): at least 10
+//   crack faces inserted; at every insertion event the energy (with the
+//   impactor's contact energy) continuous to 1e-6 of the total; the
+//   balance within 1e-5 of the cylinder's energy at every step; the
+//   cylinder slowed.
+// usage: app_impactor
+//        wall|wall_cylinder|wall_2d|free|scene|oblique_2d|cracks_2d
 //        SCENE.prm
 //        COARSE.prm WORKDIR
 #include "../check.h"
@@ -280,6 +287,41 @@ namespace
     CHECK(highest(h, "contact_force") > 0);
     CHECK(h.value(last, "impactor_velocity") > -0.99 * speed);
   }
+
+  /** A free cylinder cracks the bottom plies of a beam (@p prm,
+   * prm/impact_beam_2d.prm, shortened by @p short_prm). */
+  void
+  cracks_2d(const std::string &prm,
+            const std::string &short_prm,
+            const std::string &workdir)
+  {
+    const auto simulator
+      = amfrac_test::run_scene<2>(prm,
+                                  amfrac_test::file_text(short_prm)
+                                    + amfrac_test::history_only(workdir));
+    const History    &h      = simulator->history();
+    const std::size_t last   = h.n_rows() - 1;
+    const double      energy = h.value(0, "impactor_kinetic");
+    std::cout << h.value(last, "crack_faces") << " crack faces, balance "
+              << largest(h, "balance_error") / energy
+              << " of the cylinder's energy, its velocity "
+              << h.value(last, "impactor_velocity") << " mm/s" << std::endl;
+    CHECK(h.n_rows() == 61);
+    CHECK(h.value(last, "crack_faces") >= 10);
+    CHECK(largest(h, "balance_error") < 1e-5 * energy);
+    CHECK(h.value(last, "impactor_velocity") > -0.9 * 4000);
+    const History *events = simulator->crack_history();
+    CHECK(events != nullptr);
+    if (events == nullptr)
+      return;
+    double faces = 0;
+    for (std::size_t r = 0; r < events->n_rows(); ++r)
+      {
+        faces += events->value(r, "faces");
+        CHECK(std::abs(events->value(r, "energy_jump")) < 1e-6);
+      }
+    CHECK(faces == h.value(last, "crack_faces"));
+  }
 } // namespace
 
 int
@@ -290,8 +332,8 @@ main(int argc, char **argv)
     {
       AssertThrow(argc == 5,
                   ExcMessage("usage: app_impactor wall|wall_cylinder|"
-                             "wall_2d|free|scene|oblique_2d SCENE.prm "
-                             "COARSE.prm WORKDIR"));
+                             "wall_2d|free|scene|oblique_2d|cracks_2d "
+                             "SCENE.prm COARSE.prm WORKDIR"));
       const std::string which = argv[1];
       if (which == "wall" || which == "wall_cylinder")
         wall(argv[2], argv[4], which == "wall_cylinder");
@@ -301,6 +343,8 @@ main(int argc, char **argv)
         free_plate(argv[2], argv[4]);
       else if (which == "oblique_2d")
         oblique_2d(argv[4]);
+      else if (which == "cracks_2d")
+        cracks_2d(argv[2], argv[3], argv[4]);
       else
         scene(argv[2], argv[3], argv[4]);
     }
