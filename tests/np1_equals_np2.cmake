@@ -39,6 +39,10 @@ function(compare_ranks name complaint)
   endif()
 endfunction()
 compare_ranks(history.csv "one and two ranks differ")
+# With crack insertion: the same insertion events.
+if(EXISTS ${WORKDIR}/np1/output/cracks.csv)
+  compare_ranks(cracks.csv "one and two ranks insert different cracks")
+endif()
 # With ADAPTIVITY (runs that adapt during a load history): the same mesh
 # changes (cycle runs log their wall time there, so they are not compared).
 if(ADAPTIVITY)

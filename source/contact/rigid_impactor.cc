@@ -45,7 +45,9 @@ namespace amfrac
 
     /** The order of the records of @p stride values in @p values, each led
      * by a node's position, by position: the same on any number of ranks
-     * (the numbering of the nodes depends on the partition). */
+     * (the numbering of the nodes depends on the partition). The copies of
+     * a node split by a crack share a position: the rest of the record
+     * orders them. */
     template <int dim>
     std::vector<std::size_t>
     order_by_position(const std::vector<double> &values,
@@ -55,9 +57,9 @@ namespace amfrac
       std::iota(order.begin(), order.end(), 0);
       std::sort(order.begin(), order.end(), [&](const auto a, const auto b) {
         return std::lexicographical_compare(values.begin() + a * stride,
-                                            values.begin() + a * stride + dim,
+                                            values.begin() + (a + 1) * stride,
                                             values.begin() + b * stride,
-                                            values.begin() + b * stride + dim);
+                                            values.begin() + (b + 1) * stride);
       });
       return order;
     }

@@ -5,11 +5,58 @@
 #include <amfrac/base/mpi_max.h>
 #include <amfrac/simulator/simulator.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 #include <sstream>
 
 namespace amfrac
 {
+  namespace
+  {
+    /** The impactor's springs on the copies of one cell (a corner of a cell
+     * can become a fragment, as the cracks' bound assumes): 2 k_a / m_a
+     * with k_a = @p penalty times the integral of N_a over the cell's face
+     * on @p boundary_id, m_a the cell's lumped mass. Collective. */
+    template <int dim, typename ElementMass>
+    double
+    impactor_copy_frequency_squared(const TiedCopyDoFs<dim> &dofs,
+                                    const ElementMass       &element_mass,
+                                    const unsigned int       boundary_id,
+                                    const double             penalty,
+                                    const MPI_Comm           comm)
+    {
+      const auto            &fe = dofs.get_fe();
+      FEFaceValues<dim>      face_values(dofs.get_mapping(),
+                                    fe,
+                                    QGauss<dim - 1>(fe.degree + 1),
+                                    update_values | update_JxW_values);
+      dealii::Vector<double> mass(fe.n_dofs_per_cell());
+      double                 largest = 0;
+      for (const auto &cell : dofs.copy_handler().active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->at_boundary(f)
+                && cell->face(f)->boundary_id() == boundary_id)
+              {
+                face_values.reinit(cell, f);
+                element_mass(cell, mass);
+                for (const unsigned int a : dofs.dofs_on_face(f))
+                  {
+                    double area = 0;
+                    for (const unsigned int q :
+                         face_values.quadrature_point_indices())
+                      area
+                        += face_values.shape_value(a, q) * face_values.JxW(q);
+                    if (mass(a) > 0)
+                      largest = std::max(largest, 2 * penalty * area / mass(a));
+                  }
+              }
+      return Utilities::MPI::max(largest, comm);
+    }
+  } // namespace
+
+
+
   template <int dim>
   double
   Simulator<dim>::crack_frequency_squared(Point<dim> &where) const
@@ -30,7 +77,17 @@ namespace amfrac
     const auto   released = released_faces();
     const double local    = interfaces->crack_frequency_squared(
       dof_layer, element_mass, may_crack, where, penalty, released);
-    return max_and_where(local, where, comm);
+    const double cracks = max_and_where(local, where, comm);
+    // A copy on the impactor's face feels its spring besides the cracks'
+    // (Gershgorin's rows add; the sum of the two largest bounds them).
+    // The impactor's friction is refused with crack insertion, so its
+    // stick springs do not enter.
+    const auto &sphere = parameters.impactor;
+    if (!sphere.active)
+      return cracks;
+    return cracks
+           + impactor_copy_frequency_squared(
+             dof_layer, element_mass, sphere.boundary_id, sphere.penalty, comm);
   }
 
 
