@@ -16,31 +16,13 @@ set -eu
 build=$(cd "$1" && pwd) repeat=${2:-5}
 root=$(cd "$(dirname "$0")/../.." && pwd)
 work=$(mktemp -d)
+# shellcheck source=common.sh
+source "$root/scripts/benchmarks/common.sh"
 # $work/bar.prm: the files $2... with the bar in 3D, N = $1 along.
 bar_3d() {
   local n=$1
   shift
-  cat "$@" > "$work/bar.prm"
-  cat >> "$work/bar.prm" <<PRM
-set Dimension = 3
-subsection Geometry
-  set Width = 1
-  set Elements along width = 4
-  set Elements per ply = 4
-  set Elements along length = $n
-end
-subsection Boundary conditions
-  subsection z-
-    set Type = displacement
-    set Components = z
-    set Displacement = 0
-  end
-end
-subsection Output
-  set Field format = none
-  set Directory = $work/out
-end
-PRM
+  weakened_bar_3d "$n" "$work/out" "$@" > "$work/bar.prm"
 }
 # From the TimerOutput table of $work/log: a section's wall time [s] and
 # number of calls, the whole run's wall time, and the mesh's size.
@@ -48,7 +30,6 @@ seconds() { awk -F'|' -v s="$1" '$2 ~ "^ "s" " {gsub(/s/,"",$4); print $4+0}' "$
 calls() { awk -F'|' -v s="$1" '$2 ~ "^ "s" " {print $3+0}' "$work/log"; }
 wall() { awk -F'|' '/Total wallclock/ {gsub(/s/,"",$3); print $3+0}' "$work/log"; }
 size() { sed -n "s/.* \([0-9]*\) cells, \([0-9]*\) unknowns.*/\\$1/p" "$work/log" | head -1; }
-median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
 out=$root/doc/benchmarks/crack_insertion_cost.csv
 echo "elements_along_length,cells,unknowns,faces,insertion_s,check_s,checks,run_s" > "$out"
 for n in 16 64 256; do

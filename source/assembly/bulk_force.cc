@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <amfrac/assembly/bulk_force.h>
+#include <amfrac/assembly/shape_key.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/partitioner.h>
 #include <map>
@@ -7,28 +8,6 @@
 
 namespace amfrac
 {
-  namespace
-  {
-    /** What makes two elements' matrices equal: the ply and the vertex
-     * positions relative to the first vertex (the mapping is linear, so
-     * a translated copy has the same matrix), rounded to 1e-9 of the
-     * element's size. */
-    template <int dim>
-    std::vector<long long>
-    shape_key(const typename TiedCopyDoFs<dim>::CellIterator &cell)
-    {
-      const double           quantum = 1e-9 * cell->diameter();
-      std::vector<long long> key{static_cast<long long>(cell->material_id())};
-      for (const unsigned int v : cell->vertex_indices())
-        for (unsigned int d = 0; d < dim; ++d)
-          key.push_back(
-            std::llround((cell->vertex(v)[d] - cell->vertex(0)[d]) / quantum));
-      return key;
-    }
-  } // namespace
-
-
-
   template <int dim>
   BulkForceOperator<dim>::BulkForceOperator(
     const TiedCopyDoFs<dim>     &dofs,
@@ -68,7 +47,8 @@ namespace amfrac
     for (const auto &cell : dofs.copy_handler().active_cell_iterators())
       {
         const auto [entry, added]
-          = index.emplace(shape_key<dim>(cell), shapes.size());
+          = index.emplace(shape_key<dim>(cell, dofs.get_fe().degree > 1),
+                          shapes.size());
         if (added)
           shapes.emplace_back(cell, -1);
         shape_of_cell.push_back(entry->second);

@@ -138,23 +138,27 @@ namespace amfrac
 
 
 
-  double
-  hoffman_index(const SymmetricTensor<2, 3> &s, const Strengths &f)
+  HoffmanIndex::HoffmanIndex(const Strengths &f)
   {
     const double XX = 1. / (f.Xt * f.Xc), YY = 1. / (f.Yt * f.Yc),
                  ZZ = 1. / (f.Zt * f.Zc);
-    const double C1 = 0.5 * (YY + ZZ - XX);
-    const double C2 = 0.5 * (ZZ + XX - YY);
-    const double C3 = 0.5 * (XX + YY - ZZ);
-    const double C4 = 1. / f.Xt - 1. / f.Xc;
-    const double C5 = 1. / f.Yt - 1. / f.Yc;
-    const double C6 = 1. / f.Zt - 1. / f.Zc;
-    const double s1 = s[0][0], s2 = s[1][1], s3 = s[2][2];
-    return C1 * (s2 - s3) * (s2 - s3) + C2 * (s3 - s1) * (s3 - s1)
-           + C3 * (s1 - s2) * (s1 - s2) + C4 * s1 + C5 * s2 + C6 * s3
-           + s[1][2] * s[1][2] / (f.S23 * f.S23)
-           + s[0][2] * s[0][2] / (f.S13 * f.S13)
-           + s[0][1] * s[0][1] / (f.S12 * f.S12);
+    C1              = 0.5 * (YY + ZZ - XX);
+    C2              = 0.5 * (ZZ + XX - YY);
+    C3              = 0.5 * (XX + YY - ZZ);
+    C4              = 1. / f.Xt - 1. / f.Xc;
+    C5              = 1. / f.Yt - 1. / f.Yc;
+    C6              = 1. / f.Zt - 1. / f.Zc;
+    shear23         = 1. / (f.S23 * f.S23);
+    shear13         = 1. / (f.S13 * f.S13);
+    shear12         = 1. / (f.S12 * f.S12);
+  }
+
+
+
+  double
+  hoffman_index(const SymmetricTensor<2, 3> &s, const Strengths &f)
+  {
+    return HoffmanIndex(f)(s);
   }
 
 

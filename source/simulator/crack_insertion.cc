@@ -282,6 +282,13 @@ namespace amfrac
         if (bits != 0)
           candidate_cells.push_back(cell);
       }
+    // The screen pays in explicit runs, which check after every step; a
+    // static run checks after a converged step and keeps the memory (on
+    // meshes of unequal cells, a matrix per cell).
+    if (parameters.time.explicit_dynamics)
+      crack_screen = std::make_unique<FaceHoffmanScreen<dim>>(dof_layer,
+                                                              plies,
+                                                              candidate_cells);
   }
 
 
@@ -293,6 +300,7 @@ namespace amfrac
     candidates_found = false;
     candidate_cells.clear();
     candidate_faces.clear();
+    crack_screen.reset();
   }
 
 
@@ -301,30 +309,47 @@ namespace amfrac
   std::vector<typename Simulator<dim>::FailingFace>
   Simulator<dim>::faces_to_crack(const unsigned int max_faces) const
   {
-    constexpr unsigned int  n_faces = GeometryInfo<dim>::faces_per_cell;
-    std::vector<Point<dim>> centres(n_faces);
-    for (unsigned int f = 0; f < n_faces; ++f)
-      for (unsigned int d = 0; d < dim; ++d)
-        centres[f][d] = d == f / 2 ? double(f % 2) : 0.5;
+    constexpr unsigned int n_faces = GeometryInfo<dim>::faces_per_cell;
 
     // Round 1: each rank's cells at the centres of their candidate faces;
-    // a face fails if the mean of its two sides does, and then (the
-    // Hoffman index being convex) at least one side fails on its own.
-    // One FEValues for all cells: the face centres in reference
-    // coordinates are the same for every cell.
-    FEValues<dim>             at_centres(dof_layer.get_mapping(),
-                             dof_layer.get_fe(),
-                             Quadrature<dim>(centres),
-                             update_gradients);
+    // a face goes on to round 2 if one of its sides fails on its own, and
+    // round 2 decides on the mean of the two sides. (The index is not
+    // convex for every set of strengths: the mean may fail where neither
+    // side does, and such a face does not crack.) In explicit runs the screen
+    // evaluates the cells of plain plies (a face with both cells on this rank
+    // once, reported only if its mean fails too, with a margin for round-off so
+    // that round 2 decides every face near the limit as before); one FEValues
+    // the rest and round 2 (the face centres in reference coordinates are the
+    // same for every cell), built when needed: in explicit runs, where most
+    // checks find nothing, its construction would cost more than the screen.
+    std::unique_ptr<FEValues<dim>> at_centres;
+    const auto                     stresses_of = [&](const auto &cell) {
+      if (!at_centres)
+        at_centres = std::make_unique<FEValues<dim>>(dof_layer.get_mapping(),
+                                                     dof_layer.get_fe(),
+                                                     face_centre_points<dim>(),
+                                                     update_gradients);
+      return cell_stresses(cell, *at_centres, relevant_solution);
+    };
     std::vector<unsigned int> local_failing;
     find_crack_candidates();
+    if (crack_screen)
+      for (const auto &face : crack_screen->failing(relevant_solution,
+                                                    candidate_faces,
+                                                    crack_strength_scale,
+                                                    hoffman_limit - 1e-9))
+        {
+          const FaceKey key = lower_key<dim>(face.cell, face.face);
+          local_failing.insert(local_failing.end(), key.begin(), key.end());
+        }
     for (const auto &cell : candidate_cells)
       {
         const std::uint8_t bits = candidate_faces[cell->active_cell_index()];
-        if (bits == 0)
+        if (bits == 0
+            || (crack_screen
+                && FaceHoffmanScreen<dim>::covers(plies[cell->material_id()])))
           continue;
-        const auto stresses
-          = cell_stresses(cell, at_centres, relevant_solution);
+        const auto stresses = stresses_of(cell);
         for (unsigned int f = 0; f < n_faces; ++f)
           {
             if ((bits & (1u << f)) == 0)
@@ -339,6 +364,10 @@ namespace amfrac
             local_failing.insert(local_failing.end(), key.begin(), key.end());
           }
       }
+    // Most checks of an explicit run find nothing: one reduction says so,
+    // cheaper than gathering (serialized) lists.
+    if (Utilities::MPI::max(local_failing.empty() ? 0u : 1u, comm) == 0)
+      return {};
     std::set<FaceKey> failing_set;
     for (const auto &part : Utilities::MPI::all_gather(comm, local_failing))
       for (std::size_t i = 0; i + 4 < part.size(); i += 5)
@@ -369,8 +398,7 @@ namespace amfrac
               continue;
             const typename DoFHandler<dim>::active_cell_iterator on_copies(
               &triangulation, side->level(), side->index(), &handler);
-            const PlyStress stress
-              = cell_stresses(on_copies, at_centres, relevant_solution)[face];
+            const PlyStress stress = stresses_of(on_copies)[face];
             contributions.push_back(i);
             for (const auto &pair : voigt_pairs)
               contributions.push_back(stress.material[pair[0]][pair[1]]);

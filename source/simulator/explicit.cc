@@ -5,6 +5,7 @@
 // the current jump and history.
 #include <algorithm>
 #include <amfrac/assembly/bulk_force.h>
+#include <amfrac/base/ghost_import.h>
 #include <amfrac/base/mpi_max.h>
 #include <amfrac/cohesive/transfer_columns.h>
 #include <amfrac/parameters/expressions.h>
@@ -363,30 +364,50 @@ namespace amfrac
       damping_force, previous_damping, stiffness_velocity, displacement_step,
       momentum, old_solution, last_good, contact, body_force;
     // The work vectors on the current numbering (velocity and last_good
-    // are state: a crack insertion carries them).
-    const auto layout = [&](const bool with_state) {
-      for (Vector *v : {&mass,
-                        &acceleration,
-                        &force,
-                        &load,
-                        &previous_load,
-                        &reaction,
-                        &previous_reaction,
-                        &free_inverse_mass,
-                        &support_mask,
-                        &free_mass,
-                        &damping_force,
-                        &previous_damping,
-                        &stiffness_velocity,
-                        &displacement_step,
-                        &momentum,
-                        &old_solution,
-                        &contact,
-                        &body_force})
-        v->reinit(owned, comm);
+    // are state: a crack insertion or a mesh change carries them, and
+    // here they take the map of `solution` with their values). All
+    // vectors share that map: deal.II's assignment between vectors of
+    // separately built maps, equal or not, builds an Epetra_Import (a pass
+    // with hash look-ups over both maps), which made three assignments a
+    // step a seventh of an explicit run's time.
+    const auto share_map = [&](Vector &v) {
+      Vector moved;
+      moved.reinit(solution);
+      moved = v;
+      v.swap(moved);
+    };
+    const std::vector<Vector *> work_vectors = {&mass,
+                                                &acceleration,
+                                                &force,
+                                                &load,
+                                                &previous_load,
+                                                &reaction,
+                                                &previous_reaction,
+                                                &free_inverse_mass,
+                                                &support_mask,
+                                                &free_mass,
+                                                &damping_force,
+                                                &previous_damping,
+                                                &stiffness_velocity,
+                                                &displacement_step,
+                                                &momentum,
+                                                &old_solution,
+                                                &contact,
+                                                &body_force};
+    const auto                  layout       = [&](const bool with_state) {
       if (with_state)
-        for (Vector *v : {&solution, &velocity, &last_good})
-          v->reinit(owned, comm);
+        {
+          solution.reinit(owned, comm);
+          velocity.reinit(solution);
+          last_good.reinit(solution);
+        }
+      else
+        {
+          share_map(velocity);
+          share_map(last_good);
+        }
+      for (Vector *v : work_vectors)
+        v->reinit(solution);
       relevant_solution.reinit(owned, relevant, comm);
     };
     layout(true);
@@ -486,6 +507,10 @@ namespace amfrac
 
     std::unique_ptr<BulkForceOperator<dim>>  bulk;
     typename ElasticAssembler<dim>::CellList loaded_cells;
+    // Whether any rank has a loaded cell: a scene loaded only by its
+    // supports, an initial velocity or an impactor skips the load
+    // assembly (its scratch objects and reduction) in every step.
+    bool any_loaded = false;
     // After crack insertion (same_mesh) the element matrices stay.
     const auto build_operators = [&](const bool same_mesh = false) {
       TimerOutput::Scope scope(timer, "element matrices");
@@ -496,6 +521,8 @@ namespace amfrac
                                                         assembler,
                                                         interfaces.get());
       loaded_cells = assembler.loaded_cells(loads);
+      any_loaded
+        = Utilities::MPI::max(loaded_cells.empty() ? 0u : 1u, comm) > 0;
     };
     build_operators();
     pcout << "  bulk force: " << bulk->summary() << std::endl;
@@ -530,11 +557,13 @@ namespace amfrac
       }
       if (damped)
         force += damping_force;
-      {
-        TimerOutput::Scope scope(timer, "loads");
-        assembler.assemble_load(loads, t, loaded_cells, load);
-        hanging->condense(load);
-      }
+      // Without loaded cells `load` stays the zero of its layout.
+      if (any_loaded)
+        {
+          TimerOutput::Scope scope(timer, "loads");
+          assembler.assemble_load(loads, t, loaded_cells, load);
+          hanging->condense(load);
+        }
       // The impactor's forces stay out of `load`: their work is the
       // exchange with the sphere, not external work. They join the
       // internal force as damping does (once per step, not per entry).
@@ -662,6 +691,8 @@ namespace amfrac
       interfaces->set_time_step(dt);
     double        t = 0;
     ExplicitState state;
+    // The crack check's ghosted displacement, every step.
+    GhostImport ghost_import;
     state.dt = dt;
     // last_good: the state of the last output step, written if the run
     // diverges.
@@ -675,6 +706,9 @@ namespace amfrac
     if (restart)
       {
         restore_explicit(state);
+        // A run resumed with the loads taken out of its parameters.
+        if (!any_loaded)
+          load = 0;
         relevant_solution = solution;
         strain_energy     = state.strain_energy;
         external_work     = state.external_work;
@@ -899,10 +933,10 @@ namespace amfrac
             // Every face that fails in the step cracks in it; the state
             // moves to the new numbering, and the forces and the
             // acceleration are those of the cracked body.
-            relevant_solution = solution;
             std::vector<FailingFace> chosen;
             {
               TimerOutput::Scope scope(timer, "crack check");
+              ghost_import(solution, relevant_solution);
               chosen = faces_to_crack(std::numeric_limits<unsigned int>::max());
             }
             if (!chosen.empty())

@@ -71,6 +71,32 @@ namespace amfrac
                 const Strengths             &strengths);
 
   /**
+   * hoffman_index() with its coefficients computed once, for the many
+   * stresses of one material the crack check evaluates: a call costs a
+   * few multiplications instead of nine divisions.
+   */
+  class HoffmanIndex
+  {
+  public:
+    explicit HoffmanIndex(const Strengths &strengths);
+
+    double
+    operator()(const SymmetricTensor<2, 3> &s) const
+    {
+      const double s1 = s[0][0], s2 = s[1][1], s3 = s[2][2];
+      return C1 * (s2 - s3) * (s2 - s3) + C2 * (s3 - s1) * (s3 - s1)
+             + C3 * (s1 - s2) * (s1 - s2) + C4 * s1 + C5 * s2 + C6 * s3
+             + s[1][2] * s[1][2] * shear23 + s[0][2] * s[0][2] * shear13
+             + s[0][1] * s[0][1] * shear12;
+    }
+
+  private:
+    double C1, C2, C3, C4, C5, C6;
+    /** 1 / S_ij^2. */
+    double shear23, shear13, shear12;
+  };
+
+  /**
    * Restrict a 3D laminate-axes tensor to the plane-strain model, whose
    * two axes are laminate x (0) and the thickness direction z (2); the
    * laminate width direction y is the out-of-plane axis.

@@ -4,6 +4,7 @@
 #include <amfrac/adaptivity/explicit_state_transfer.h>
 #include <amfrac/adaptivity/history_transfer.h>
 #include <amfrac/assembly/elastic_assembler.h>
+#include <amfrac/assembly/face_hoffman_screen.h>
 #include <amfrac/assembly/lever.h>
 #include <amfrac/assembly/loads.h>
 #include <amfrac/assembly/plastic_plies.h>
@@ -239,6 +240,9 @@ namespace amfrac
     mutable std::vector<std::uint8_t> candidate_faces;
     mutable std::vector<typename DoFHandler<dim>::active_cell_iterator>
       candidate_cells;
+    /** The first round of the crack check on candidate_cells, built with
+     * them. */
+    mutable std::unique_ptr<FaceHoffmanScreen<dim>> crack_screen;
     /** The strength scale of every regular interior face (both sides),
      * by CellId and face. */
     using FaceValues = std::map<std::pair<CellId, unsigned int>, double>;

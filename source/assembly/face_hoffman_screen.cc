@@ -1,0 +1,244 @@
+#include <Epetra_BlockMap.h>
+#include <Epetra_MultiVector.h>
+#include <amfrac/assembly/face_hoffman_screen.h>
+#include <amfrac/assembly/shape_key.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/fe/fe_values.h>
+#include <map>
+
+namespace amfrac
+{
+  namespace
+  {
+    /** The material-axes stress components a screen's matrix rows hold,
+     * in this order. */
+    constexpr unsigned int components[6][2]
+      = {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
+
+  } // namespace
+
+
+
+  template <int dim>
+  Quadrature<dim>
+  face_centre_points()
+  {
+    std::vector<Point<dim>> centres(GeometryInfo<dim>::faces_per_cell);
+    for (unsigned int f = 0; f < centres.size(); ++f)
+      for (unsigned int d = 0; d < dim; ++d)
+        centres[f][d] = d == f / 2 ? double(f % 2) : 0.5;
+    return Quadrature<dim>(centres);
+  }
+
+
+
+  template <int dim>
+  FaceHoffmanScreen<dim>::FaceHoffmanScreen(
+    const TiedCopyDoFs<dim>               &dofs,
+    const std::vector<PlyProperties<dim>> &plies,
+    const std::vector<Cell>               &given)
+    : dofs(dofs)
+    , dofs_per_cell(dofs.get_fe().n_dofs_per_cell())
+  {
+    // Every rank sorts all cells of the mesh into shapes, so that a
+    // shape's first cell is the same on every rank.
+    std::map<std::vector<long long>, unsigned int> index;
+    std::vector<unsigned int>                      shape_of_active(
+      dofs.copy_handler().get_triangulation().n_active_cells());
+    std::vector<Cell> first;
+    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
+      {
+        const auto [entry, added]
+          = index.emplace(shape_key<dim>(cell, dofs.get_fe().degree > 1),
+                          first.size());
+        if (added)
+          first.push_back(cell);
+        shape_of_active[cell->active_cell_index()] = entry->second;
+      }
+
+    // The shapes of the screened cells get their matrices, numbered in
+    // the order the cells first use them.
+    FEValues<dim>                    values(dofs.get_mapping(),
+                         dofs.get_fe(),
+                         face_centre_points<dim>(),
+                         update_gradients);
+    const FEValuesExtractors::Vector displacement(0);
+    std::vector<int>                 screen_shape(first.size(), -1);
+    for (const Cell &cell : given)
+      {
+        const PlyProperties<dim> &ply = plies[cell->material_id()];
+        if (!covers(ply))
+          continue;
+        int &shape = screen_shape[shape_of_active[cell->active_cell_index()]];
+        if (shape < 0)
+          {
+            shape = hoffman.size();
+            hoffman.emplace_back(ply.strengths);
+            values.reinit(first[shape_of_active[cell->active_cell_index()]]);
+            for (unsigned int f = 0; f < n_faces; ++f)
+              for (const auto &c : components)
+                for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                  matrices.push_back(
+                    evaluate_ply_stress(
+                      ply, values[displacement].symmetric_gradient(j, f))
+                      .material[c[0]][c[1]]);
+          }
+        cells.push_back(cell);
+        shape_of_cell.push_back(shape);
+      }
+    find_partners();
+  }
+
+
+
+  template <int dim>
+  void
+  FaceHoffmanScreen<dim>::find_partners()
+  {
+    std::vector<int> screened(
+      dofs.copy_handler().get_triangulation().n_active_cells(), -1);
+    for (unsigned int c = 0; c < cells.size(); ++c)
+      screened[cells[c]->active_cell_index()] = c;
+    partner.assign(cells.size() * n_faces, -1);
+    partner_face.assign(cells.size() * n_faces, 0);
+    for (unsigned int c = 0; c < cells.size(); ++c)
+      for (unsigned int f = 0; f < n_faces; ++f)
+        {
+          const Cell &cell = cells[c];
+          if (cell->at_boundary(f) || !cell->neighbor(f)->is_active()
+              || cell->neighbor_is_coarser(f))
+            continue;
+          const auto neighbor = cell->neighbor(f);
+          const int  other    = screened[neighbor->active_cell_index()];
+          if (other >= 0 && neighbor->material_id() == cell->material_id())
+            {
+              partner[c * n_faces + f]      = other;
+              partner_face[c * n_faces + f] = cell->neighbor_of_neighbor(f);
+            }
+        }
+  }
+
+
+
+  template <int dim>
+  FaceHoffmanScreen<dim>::~FaceHoffmanScreen() = default;
+
+
+
+  template <int dim>
+  bool
+  FaceHoffmanScreen<dim>::covers(const PlyProperties<dim> &ply)
+  {
+    return ply.layers.empty();
+  }
+
+
+
+  template <int dim>
+  void
+  FaceHoffmanScreen<dim>::locate_dofs(const Vector &state) const
+  {
+    const Epetra_BlockMap &map = state.trilinos_vector().Map();
+    located_map                = std::make_unique<Epetra_BlockMap>(map);
+    local_dofs.resize(cells.size() * dofs_per_cell);
+    std::vector<types::global_dof_index> indices(dofs_per_cell);
+    for (unsigned int c = 0; c < cells.size(); ++c)
+      {
+        dofs.get_dof_indices(cells[c], indices);
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          {
+            const int local = map.LID(
+              static_cast<TrilinosWrappers::types::int_type>(indices[i]));
+            AssertThrow(local >= 0,
+                        ExcMessage("FaceHoffmanScreen: the state lacks a "
+                                   "dof of a screened cell"));
+            local_dofs[c * dofs_per_cell + i] = local;
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<2, 3>
+  FaceHoffmanScreen<dim>::face_stress(const unsigned int c,
+                                      const unsigned int f,
+                                      const double      *all) const
+  {
+    const unsigned int n     = dofs_per_cell;
+    const int         *local = &local_dofs[c * n];
+    const double *matrix = &matrices[(shape_of_cell[c] * n_faces + f) * 6 * n];
+    SymmetricTensor<2, 3> stress;
+    for (unsigned int k = 0; k < 6; ++k)
+      {
+        const double *row = matrix + k * n;
+        double        sum = 0;
+        for (unsigned int i = 0; i < n; ++i)
+          sum += row[i] * all[local[i]];
+        stress[components[k][0]][components[k][1]] = sum;
+      }
+    return stress;
+  }
+
+
+
+  template <int dim>
+  std::vector<typename FaceHoffmanScreen<dim>::Index>
+  FaceHoffmanScreen<dim>::failing(const Vector                    &state,
+                                  const std::vector<std::uint8_t> &face_bits,
+                                  const std::vector<double> &strength_scale,
+                                  const double               limit) const
+  {
+    if (!located_map
+        || located_map->DataPtr() != state.trilinos_vector().Map().DataPtr())
+      locate_dofs(state);
+    const double      *all = state.trilinos_vector()[0];
+    std::vector<Index> result;
+    for (unsigned int c = 0; c < cells.size(); ++c)
+      {
+        const unsigned int active = cells[c]->active_cell_index();
+        const std::uint8_t bits   = face_bits[active];
+        for (unsigned int f = 0; f < n_faces; ++f)
+          {
+            if ((bits & (1u << f)) == 0)
+              continue;
+            const int    other = partner[c * n_faces + f];
+            const double scale = 1. / strength_scale[active * n_faces + f];
+            const HoffmanIndex   &index_of = hoffman[shape_of_cell[c]];
+            SymmetricTensor<2, 3> stress   = scale * face_stress(c, f, all);
+            double                index    = index_of(stress);
+            if (other >= 0)
+              {
+                const unsigned int other_active
+                  = cells[other]->active_cell_index();
+                const unsigned int other_face = partner_face[c * n_faces + f];
+                const bool         other_set
+                  = (face_bits[other_active] >> other_face) & 1u;
+                // The pair is the lower cell's (of those with the bit).
+                if (other_set && other_active < active)
+                  continue;
+                const SymmetricTensor<2, 3> other_stress
+                  = scale * face_stress(other, other_face, all);
+                // A side fails (as the one-sided check of a face split
+                // between ranks) and so does the mean.
+                const double side
+                  = other_set ? std::max(index, index_of(other_stress)) : index;
+                index = std::min(side, index_of(0.5 * (stress + other_stress)));
+              }
+            // A NaN fails too: the caller's second round decides.
+            if (!(index < limit))
+              result.push_back({cells[c], f, index});
+          }
+      }
+    return result;
+  }
+
+
+
+  template Quadrature<2>
+  face_centre_points();
+  template Quadrature<3>
+  face_centre_points();
+  template class FaceHoffmanScreen<2>;
+  template class FaceHoffmanScreen<3>;
+} // namespace amfrac
