@@ -43,16 +43,11 @@ namespace amfrac
   void
   BulkForceOperator<dim>::find_shapes(const TiedCopyDoFs<dim> &dofs)
   {
-    std::map<std::vector<long long>, unsigned int> index;
-    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
-      {
-        const auto [entry, added]
-          = index.emplace(shape_key<dim>(cell, dofs.get_fe().degree > 1),
-                          shapes.size());
-        if (added)
-          shapes.emplace_back(cell, -1);
-        shape_of_cell.push_back(entry->second);
-      }
+    CellShapes<dim> sorted
+      = sort_into_shapes(dofs.copy_handler(), dofs.get_fe().degree > 1);
+    shape_of_cell = std::move(sorted.shape_of_cell);
+    for (const Cell &cell : sorted.first_cell)
+      shapes.emplace_back(cell, -1);
   }
 
 

@@ -40,21 +40,8 @@ namespace amfrac
     : dofs(dofs)
     , dofs_per_cell(dofs.get_fe().n_dofs_per_cell())
   {
-    // Every rank sorts all cells of the mesh into shapes, so that a
-    // shape's first cell is the same on every rank.
-    std::map<std::vector<long long>, unsigned int> index;
-    std::vector<unsigned int>                      shape_of_active(
-      dofs.copy_handler().get_triangulation().n_active_cells());
-    std::vector<Cell> first;
-    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
-      {
-        const auto [entry, added]
-          = index.emplace(shape_key<dim>(cell, dofs.get_fe().degree > 1),
-                          first.size());
-        if (added)
-          first.push_back(cell);
-        shape_of_active[cell->active_cell_index()] = entry->second;
-      }
+    const CellShapes<dim> sorted
+      = sort_into_shapes(dofs.copy_handler(), dofs.get_fe().degree > 1);
 
     // The shapes of the screened cells get their matrices, numbered in
     // the order the cells first use them.
@@ -63,18 +50,20 @@ namespace amfrac
                          face_centre_points<dim>(),
                          update_gradients);
     const FEValuesExtractors::Vector displacement(0);
-    std::vector<int>                 screen_shape(first.size(), -1);
+    std::vector<int>                 screen_shape(sorted.first_cell.size(), -1);
     for (const Cell &cell : given)
       {
         const PlyProperties<dim> &ply = plies[cell->material_id()];
         if (!covers(ply))
           continue;
-        int &shape = screen_shape[shape_of_active[cell->active_cell_index()]];
+        const unsigned int sorted_shape
+          = sorted.shape_of_cell[cell->active_cell_index()];
+        int &shape = screen_shape[sorted_shape];
         if (shape < 0)
           {
             shape = hoffman.size();
             hoffman.emplace_back(ply.strengths);
-            values.reinit(first[shape_of_active[cell->active_cell_index()]]);
+            values.reinit(sorted.first_cell[sorted_shape]);
             for (unsigned int f = 0; f < n_faces; ++f)
               for (const auto &c : components)
                 for (unsigned int j = 0; j < dofs_per_cell; ++j)

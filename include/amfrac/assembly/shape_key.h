@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <deal.II/base/types.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <map>
 #include <vector>
 
 namespace amfrac
@@ -42,5 +44,46 @@ namespace amfrac
     if (curved)
       key.push_back(-1 - static_cast<long long>(cell->active_cell_index()));
     return key;
+  }
+
+
+
+  /** Every active cell of a mesh sorted into shapes (by shape_key). */
+  template <int dim>
+  struct CellShapes
+  {
+    using Cell = typename dealii::DoFHandler<dim>::active_cell_iterator;
+    /** The shape of each active cell, by active cell index. */
+    std::vector<unsigned int> shape_of_cell;
+    /** The first cell (in active cell order) of each shape. */
+    std::vector<Cell> first_cell;
+  };
+
+
+
+  /**
+   * Sort all active cells of @p handler into shapes. Every rank of a shared
+   * mesh sorts all cells, so that the shapes' numbers and first cells are
+   * the same on every rank (their matrices are then computed from the same
+   * cell everywhere, and results do not depend on the partition).
+   */
+  template <int dim>
+  CellShapes<dim>
+  sort_into_shapes(const dealii::DoFHandler<dim> &handler,
+                   const bool                     curved_mapping)
+  {
+    CellShapes<dim>                                shapes;
+    std::map<std::vector<long long>, unsigned int> index;
+    shapes.shape_of_cell.resize(handler.get_triangulation().n_active_cells());
+    for (const auto &cell : handler.active_cell_iterators())
+      {
+        const auto [entry, added]
+          = index.emplace(shape_key<dim>(cell, curved_mapping),
+                          shapes.first_cell.size());
+        if (added)
+          shapes.first_cell.push_back(cell);
+        shapes.shape_of_cell[cell->active_cell_index()] = entry->second;
+      }
+    return shapes;
   }
 } // namespace amfrac
