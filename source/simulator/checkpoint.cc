@@ -162,7 +162,14 @@ namespace amfrac
   Simulator<dim>::restore_vector(const std::string &name, Vector &v) const
   {
     const IndexSet &owned = dof_layer.locally_owned_dofs();
-    v.reinit(owned, comm);
+    // A vector already laid out on this numbering keeps its map: vectors
+    // that share one assign without an Epetra_Import (the explicit loop's
+    // work vectors share the map of `solution`). The decision is taken by
+    // all ranks together, since a new map is built collectively.
+    const bool laid_out
+      = !v.has_ghost_elements() && v.locally_owned_elements() == owned;
+    if (Utilities::MPI::min(laid_out ? 1 : 0, comm) == 0)
+      v.reinit(owned, comm);
     const unsigned int n_local = dof_layer.get_fe().n_dofs_per_cell();
     // Every saved cell of every part, by id: any number of ranks reads it.
     std::map<CellId, const double *> saved;
