@@ -122,6 +122,65 @@ namespace amfrac
 
 
 
+  namespace
+  {
+    template <unsigned int N>
+    void
+    gathered_columns_fixed(const double *A,
+                           const int    *local,
+                           const double *u,
+                           double       *y)
+    {
+      // Two accumulators halve the chain of dependent additions.
+      double       even[column_length] = {}, odd[column_length] = {};
+      unsigned int i = 0;
+      for (; i + 1 < N; i += 2)
+        {
+          const double  a = u[local[i]], b = u[local[i + 1]];
+          const double *column = A + i * column_length;
+          for (unsigned int r = 0; r < column_length; ++r)
+            even[r] += column[r] * a;
+          for (unsigned int r = 0; r < column_length; ++r)
+            odd[r] += column[column_length + r] * b;
+        }
+      if (i < N)
+        for (unsigned int r = 0; r < column_length; ++r)
+          even[r] += A[i * column_length + r] * u[local[i]];
+      for (unsigned int r = 0; r < column_length; ++r)
+        y[r] = even[r] + odd[r];
+    }
+  } // namespace
+
+
+
+  void
+  gathered_columns_product(const double      *A,
+                           const unsigned int n,
+                           const int         *local,
+                           const double      *u,
+                           double            *y)
+  {
+    switch (n)
+      {
+        case 8:
+          return gathered_columns_fixed<8>(A, local, u, y);
+        case 18:
+          return gathered_columns_fixed<18>(A, local, u, y);
+        case 24:
+          return gathered_columns_fixed<24>(A, local, u, y);
+        case 81:
+          return gathered_columns_fixed<81>(A, local, u, y);
+        default:
+          for (unsigned int r = 0; r < column_length; ++r)
+            y[r] = 0;
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int r = 0; r < column_length; ++r)
+              y[r] += A[i * column_length + r] * u[local[i]];
+      }
+  }
+
+
+
   std::size_t
   ElementMatrixKernel::memory_consumption() const
   {

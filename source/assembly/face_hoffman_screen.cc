@@ -1,5 +1,6 @@
 #include <Epetra_BlockMap.h>
 #include <Epetra_MultiVector.h>
+#include <amfrac/assembly/element_kernel.h>
 #include <amfrac/assembly/face_hoffman_screen.h>
 #include <amfrac/assembly/shape_key.h>
 #include <deal.II/base/quadrature.h>
@@ -10,8 +11,8 @@ namespace amfrac
 {
   namespace
   {
-    /** The material-axes stress components a screen's matrix rows hold,
-     * in this order. */
+    /** The material-axes stress components a screen's matrix columns
+     * hold, in this order (HoffmanIndex's). */
     constexpr unsigned int components[6][2]
       = {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
 
@@ -65,12 +66,14 @@ namespace amfrac
             hoffman.emplace_back(ply.strengths);
             values.reinit(sorted.first_cell[sorted_shape]);
             for (unsigned int f = 0; f < n_faces; ++f)
-              for (const auto &c : components)
-                for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                  matrices.push_back(
-                    evaluate_ply_stress(
-                      ply, values[displacement].symmetric_gradient(j, f))
-                      .material[c[0]][c[1]]);
+              for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                {
+                  const auto stress = evaluate_ply_stress(
+                    ply, values[displacement].symmetric_gradient(j, f));
+                  for (const auto &c : components)
+                    matrices.push_back(stress.material[c[0]][c[1]]);
+                  matrices.insert(matrices.end(), column_padding, 0.);
+                }
           }
         cells.push_back(cell);
         shape_of_cell.push_back(shape);
@@ -149,24 +152,22 @@ namespace amfrac
 
 
   template <int dim>
-  SymmetricTensor<2, 3>
+  void
   FaceHoffmanScreen<dim>::face_stress(const unsigned int c,
                                       const unsigned int f,
-                                      const double      *all) const
+                                      const double      *all,
+                                      const double       scale,
+                                      double            *stress) const
   {
-    const unsigned int n     = dofs_per_cell;
-    const int         *local = &local_dofs[c * n];
-    const double *matrix = &matrices[(shape_of_cell[c] * n_faces + f) * 6 * n];
-    SymmetricTensor<2, 3> stress;
+    const unsigned int n = dofs_per_cell;
+    gathered_columns_product(
+      &matrices[(shape_of_cell[c] * n_faces + f) * n * column_length],
+      n,
+      &local_dofs[c * n],
+      all,
+      stress);
     for (unsigned int k = 0; k < 6; ++k)
-      {
-        const double *row = matrix + k * n;
-        double        sum = 0;
-        for (unsigned int i = 0; i < n; ++i)
-          sum += row[i] * all[local[i]];
-        stress[components[k][0]][components[k][1]] = sum;
-      }
-    return stress;
+      stress[k] *= scale;
   }
 
 
@@ -193,9 +194,10 @@ namespace amfrac
               continue;
             const int    other = partner[c * n_faces + f];
             const double scale = 1. / strength_scale[active * n_faces + f];
-            const HoffmanIndex   &index_of = hoffman[shape_of_cell[c]];
-            SymmetricTensor<2, 3> stress   = scale * face_stress(c, f, all);
-            double                index    = index_of(stress);
+            const HoffmanIndex &index_of = hoffman[shape_of_cell[c]];
+            double              stress[column_length];
+            face_stress(c, f, all, scale, stress);
+            double index = index_of(stress);
             if (other >= 0)
               {
                 const unsigned int other_active
@@ -206,13 +208,15 @@ namespace amfrac
                 // The pair is the lower cell's (of those with the bit).
                 if (other_set && other_active < active)
                   continue;
-                const SymmetricTensor<2, 3> other_stress
-                  = scale * face_stress(other, other_face, all);
+                double other_stress[column_length], mean[6];
+                face_stress(other, other_face, all, scale, other_stress);
+                for (unsigned int k = 0; k < 6; ++k)
+                  mean[k] = 0.5 * (stress[k] + other_stress[k]);
                 // A side fails (as the one-sided check of a face split
                 // between ranks) and so does the mean.
                 const double side
                   = other_set ? std::max(index, index_of(other_stress)) : index;
-                index = std::min(side, index_of(0.5 * (stress + other_stress)));
+                index = std::min(side, index_of(mean));
               }
             // A NaN fails too: the caller's second round decides.
             if (!(index < limit))

@@ -73,4 +73,27 @@ namespace amfrac
     double
     apply_any(const double *u, double *f) const;
   };
+
+
+
+  /** The length of gathered_columns_product()'s columns. */
+  constexpr unsigned int column_length = 8;
+  /** Zeros that pad a column of 6 (a symmetric tensor) to column_length. */
+  constexpr unsigned int column_padding = column_length - 6;
+
+  /**
+   * y[r] = sum_i A[i column_length + r] u[local[i]] for r < column_length:
+   * n columns of column_length entries (column major) times the entries
+   * of u at n local indices. The columns are added as whole vectors,
+   * which vectorizes without reordering any sum (a row-major dot product
+   * is a serial chain of additions without -ffast-math). Compiled with
+   * the element kernel's flags: FaceHoffmanScreen's stresses at the face
+   * centres, every explicit step.
+   */
+  void
+  gathered_columns_product(const double      *A,
+                           const unsigned int n,
+                           const int         *local,
+                           const double      *u,
+                           double            *y);
 } // namespace amfrac

@@ -113,18 +113,24 @@ namespace amfrac
     find_partners();
 
     /** The material-axes stress at the centre of face @p f of screened
-     * cell @p c, from the cell's dof values in @p all. */
-    SymmetricTensor<2, 3>
+     * cell @p c, from the cell's dof values in @p all, times @p scale:
+     * the components (11, 22, 33, 23, 13, 12) in @p stress[0..5] (it
+     * holds column_length entries). */
+    void
     face_stress(const unsigned int c,
                 const unsigned int f,
-                const double      *all) const;
+                const double      *all,
+                const double       scale,
+                double            *stress) const;
 
     const TiedCopyDoFs<dim>  &dofs;
     const unsigned int        dofs_per_cell;
     std::vector<Cell>         cells;
     std::vector<unsigned int> shape_of_cell;
-    /** Per shape, per face, the 6 material-axes stress components (11,
-     * 22, 33, 23, 13, 12) times the cell's dofs (row major). */
+    /** Per shape, per face and per dof of the cell, a column: the 6
+     * material-axes stress components (11, 22, 33, 23, 13, 12) of the
+     * dof's shape function, padded to gathered_columns_product()'s
+     * column length with zeros. */
     std::vector<double>       matrices;
     std::vector<HoffmanIndex> hoffman;
     /** Per screened cell and face: the screened cell on its other side

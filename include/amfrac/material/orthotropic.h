@@ -83,11 +83,21 @@ namespace amfrac
     double
     operator()(const SymmetricTensor<2, 3> &s) const
     {
-      const double s1 = s[0][0], s2 = s[1][1], s3 = s[2][2];
+      const double components[6]
+        = {s[0][0], s[1][1], s[2][2], s[1][2], s[0][2], s[0][1]};
+      return (*this)(components);
+    }
+
+    /** The index of the stress with components @p s = (11, 22, 33, 23,
+     * 13, 12). */
+    double
+    operator()(const double *s) const
+    {
+      const double s1 = s[0], s2 = s[1], s3 = s[2];
       return C1 * (s2 - s3) * (s2 - s3) + C2 * (s3 - s1) * (s3 - s1)
              + C3 * (s1 - s2) * (s1 - s2) + C4 * s1 + C5 * s2 + C6 * s3
-             + s[1][2] * s[1][2] * shear23 + s[0][2] * s[0][2] * shear13
-             + s[0][1] * s[0][1] * shear12;
+             + s[3] * s[3] * shear23 + s[4] * s[4] * shear13
+             + s[5] * s[5] * shear12;
     }
 
   private:
