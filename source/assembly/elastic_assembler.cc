@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <amfrac/assembly/elastic_assembler.h>
+#include <amfrac/assembly/shape_key.h>
 #include <amfrac/base/first_failure.h>
 #include <amfrac/parameters/input_error.h>
 #include <cmath>
@@ -61,6 +62,69 @@ namespace amfrac
     std::vector<SymmetricTensor<2, dim>> strains;
     std::vector<SymmetricTensor<2, dim>> stresses;
     const FEValuesExtractors::Vector     displacement{0};
+  };
+
+
+
+  /**
+   * The element stiffness matrices of the mesh's cells, shared by the
+   * cells of one shape (shape_key: ply, size and vertex offsets), each
+   * computed once from the shape's first cell, the same cell on every rank
+   * (so the matrices do not depend on the partition). On a structured
+   * laminate a handful of matrices serve every cell: a static run
+   * assembles its bulk matrices after every crack insertion, and K_e by
+   * quadrature for every cell was 43 % of that set-up on the 3D bar of
+   * doc/benchmarks section 11. A mesh whose cells mostly differ (a
+   * distorted one) computes each cell's own, as before.
+   */
+  template <int dim>
+  class ElasticAssembler<dim>::SharedStiffness
+  {
+  public:
+    explicit SharedStiffness(const ElasticAssembler<dim> &assembler)
+      : assembler(assembler)
+      , scratch(assembler.dofs, assembler.quadrature_degree)
+      , shapes(sort_into_shapes(assembler.dofs.copy_handler(),
+                                assembler.dofs.get_fe().degree > 1))
+      , own(assembler.dofs.get_fe().n_dofs_per_cell(),
+            assembler.dofs.get_fe().n_dofs_per_cell())
+    {
+      if (4 * shapes.first_cell.size() <= shapes.shape_of_cell.size())
+        shared.resize(shapes.first_cell.size());
+    }
+
+    /** K_e of @p cell (valid until the next call). */
+    const FullMatrix<double> &
+    operator()(const typename TiedCopyDoFs<dim>::CellIterator &cell)
+    {
+      if (shared.empty())
+        return compute(cell, own);
+      const unsigned int shape
+        = shapes.shape_of_cell[cell->active_cell_index()];
+      FullMatrix<double> &K = shared[shape];
+      if (K.m() == 0)
+        {
+          K.reinit(own.m(), own.n());
+          compute(shapes.first_cell[shape], K);
+        }
+      return K;
+    }
+
+  private:
+    const FullMatrix<double> &
+    compute(const typename TiedCopyDoFs<dim>::CellIterator &cell,
+            FullMatrix<double>                             &K)
+    {
+      scratch.fe_values.reinit(cell);
+      assembler.cell_matrix(scratch, cell->material_id(), K);
+      return K;
+    }
+
+    const ElasticAssembler<dim>    &assembler;
+    Scratch                         scratch;
+    const CellShapes<dim>           shapes;
+    FullMatrix<double>              own;
+    std::vector<FullMatrix<double>> shared;
   };
 
 
@@ -390,18 +454,17 @@ namespace amfrac
     const AffineConstraints<double> &constraints,
     Matrix                          &matrix) const
   {
-    const unsigned int                   n = dofs.get_fe().n_dofs_per_cell();
-    Scratch                              scratch(dofs, quadrature_degree);
-    FullMatrix<double>                   K(n, n);
-    std::vector<types::global_dof_index> indices(n);
+    SharedStiffness                      stiffness(*this);
+    std::vector<types::global_dof_index> indices(
+      dofs.get_fe().n_dofs_per_cell());
     matrix = 0;
     for (const auto &cell : dofs.copy_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          scratch.fe_values.reinit(cell);
-          cell_matrix(scratch, cell->material_id(), K);
           dofs.get_dof_indices(cell, indices);
-          constraints.distribute_local_to_global(K, indices, matrix);
+          constraints.distribute_local_to_global(stiffness(cell),
+                                                 indices,
+                                                 matrix);
         }
     matrix.compress(VectorOperation::add);
   }
@@ -531,7 +594,7 @@ namespace amfrac
   {
     const unsigned int                   n = dofs.get_fe().n_dofs_per_cell();
     Scratch                              scratch(dofs, quadrature_degree);
-    FullMatrix<double>                   K(n, n);
+    SharedStiffness                      stiffness(*this);
     dealii::Vector<double>               f(n), u(n), r(n);
     std::vector<types::global_dof_index> indices(n);
     Energies                             energies;
@@ -543,9 +606,8 @@ namespace amfrac
           dofs.get_dof_indices(cell, indices);
           for (unsigned int i = 0; i < n; ++i)
             u(i) = solution(indices[i]);
-          cell_matrix(scratch, cell->material_id(), K);
+          stiffness(cell).vmult(r, u);
           cell_load(scratch, cell, loads, t, f);
-          K.vmult(r, u);
           energies.strain_energy += 0.5 * (r * u);
           energies.load_work += f * u;
           r -= f;

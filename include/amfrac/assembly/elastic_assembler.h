@@ -142,6 +142,7 @@ namespace amfrac
     const unsigned int                     quadrature_degree;
 
     class Scratch;
+    class SharedStiffness;
 
     void
     cell_matrix(Scratch            &scratch,
