@@ -16,7 +16,7 @@ here=$(cd "$(dirname "$0")/../.." && pwd)
 work=$(mktemp -d)
 # shellcheck source=common.sh
 source "$here/scripts/benchmarks/common.sh"
-echo "build,elements_along_length,run_s,insertion_s,setup_newton_s,linear_solve_s,crack_faces" > "$out"
+echo "build,elements_along_length,run_s,insertion_s,setup_newton_s,linear_solve_s,insertion_rounds" > "$out"
 for _ in $(seq "$repeat"); do
   for n in 16 64 256; do
     weakened_bar_3d "$n" "$work/out" "$here/prm/cracked_bar_2d.prm" > "$work/bar.prm"

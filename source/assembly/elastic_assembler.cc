@@ -84,13 +84,15 @@ namespace amfrac
     explicit SharedStiffness(const ElasticAssembler<dim> &assembler)
       : assembler(assembler)
       , scratch(assembler.dofs, assembler.quadrature_degree)
-      , shapes(sort_into_shapes(assembler.dofs.copy_handler(),
-                                assembler.dofs.get_fe().degree > 1))
+      , shapes(sort_into_shapes(
+          assembler.dofs.copy_handler(),
+          assembler.dofs.get_fe().degree > 1,
+          assembler.dofs.copy_handler().get_triangulation().n_active_cells()
+            / 4))
       , own(assembler.dofs.get_fe().n_dofs_per_cell(),
             assembler.dofs.get_fe().n_dofs_per_cell())
     {
-      if (4 * shapes.first_cell.size() <= shapes.shape_of_cell.size())
-        shared.resize(shapes.first_cell.size());
+      shared.resize(shapes.first_cell.size());
     }
 
     /** K_e of @p cell (valid until the next call). */

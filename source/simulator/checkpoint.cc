@@ -166,8 +166,8 @@ namespace amfrac
     // that share one assign without an Epetra_Import (the explicit loop's
     // work vectors share the map of `solution`). The decision is taken by
     // all ranks together, since a new map is built collectively.
-    const bool laid_out
-      = !v.has_ghost_elements() && v.locally_owned_elements() == owned;
+    const bool laid_out = v.size() == owned.size() && !v.has_ghost_elements()
+                          && v.locally_owned_elements() == owned;
     if (Utilities::MPI::min(laid_out ? 1 : 0, comm) == 0)
       v.reinit(owned, comm);
     const unsigned int n_local = dof_layer.get_fe().n_dofs_per_cell();

@@ -84,11 +84,12 @@ namespace amfrac
   /**
    * y[r] = sum_i A[i column_length + r] u[local[i]] for r < column_length:
    * n columns of column_length entries (column major) times the entries
-   * of u at n local indices. The columns are added as whole vectors,
-   * which vectorizes without reordering any sum (a row-major dot product
-   * is a serial chain of additions without -ffast-math). Compiled with
-   * the element kernel's flags: FaceHoffmanScreen's stresses at the face
-   * centres, every explicit step.
+   * of u at n local indices. The columns are added as whole vectors, in
+   * two accumulators (even and odd columns), which vectorizes across the
+   * entries without -ffast-math (a row-major dot product stays a serial
+   * chain of additions); each entry's sum has a fixed order, whatever the
+   * vector width. Compiled with the element kernel's flags:
+   * FaceHoffmanScreen's stresses at the face centres, every explicit step.
    */
   void
   gathered_columns_product(const double      *A,

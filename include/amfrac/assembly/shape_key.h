@@ -3,6 +3,7 @@
 #include <cmath>
 #include <deal.II/base/types.h>
 #include <deal.II/dofs/dof_handler.h>
+#include <limits>
 #include <map>
 #include <vector>
 
@@ -65,12 +66,16 @@ namespace amfrac
    * Sort all active cells of @p handler into shapes. Every rank of a shared
    * mesh sorts all cells, so that the shapes' numbers and first cells are
    * the same on every rank (their matrices are then computed from the same
-   * cell everywhere, and results do not depend on the partition).
+   * cell everywhere, and results do not depend on the partition). With
+   * @p max_shapes given, a mesh of more shapes gives no sorting at all
+   * (both vectors empty), and the sorting's memory stays bounded.
    */
   template <int dim>
   CellShapes<dim>
   sort_into_shapes(const dealii::DoFHandler<dim> &handler,
-                   const bool                     curved_mapping)
+                   const bool                     curved_mapping,
+                   const std::size_t              max_shapes
+                   = std::numeric_limits<std::size_t>::max())
   {
     CellShapes<dim>                                shapes;
     std::map<std::vector<long long>, unsigned int> index;
@@ -82,6 +87,8 @@ namespace amfrac
                           shapes.first_cell.size());
         if (added)
           shapes.first_cell.push_back(cell);
+        if (shapes.first_cell.size() > max_shapes)
+          return CellShapes<dim>();
         shapes.shape_of_cell[cell->active_cell_index()] = entry->second;
       }
     return shapes;
