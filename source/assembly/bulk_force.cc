@@ -3,7 +3,6 @@
 #include <amfrac/assembly/shape_key.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/partitioner.h>
-#include <map>
 #include <sstream>
 
 namespace amfrac

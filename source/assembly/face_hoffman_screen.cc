@@ -5,7 +5,6 @@
 #include <amfrac/assembly/shape_key.h>
 #include <deal.II/base/quadrature.h>
 #include <deal.II/fe/fe_values.h>
-#include <map>
 
 namespace amfrac
 {
