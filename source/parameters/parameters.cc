@@ -1882,13 +1882,6 @@ namespace amfrac
               "Process zone elements: in 3D they refine along the plies "
               "only); refine the contact zone with Geometry/Refinement "
               "region");
-      // Explicit runs regroup the impactor's nodes after an insertion; a
-      // static run would need the insertion's re-solve with the contact.
-      require(!cracks.active || time.explicit_dynamics,
-              face,
-              "a prescribed impactor cannot be combined yet with crack "
-              "insertion (Crack insertion/Criterion) in a static run; a "
-              "free one in an explicit run can");
       // The friction history is keyed by a node's position, which the
       // copies of a split node share.
       require(!cracks.active || impactor.friction == 0,

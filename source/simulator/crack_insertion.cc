@@ -606,6 +606,10 @@ namespace amfrac
     // The reactions of the converged state on the new numbering start the
     // trapezoidal rule of the external work of the step solved again.
     newton->converged_solution = converged;
+    // The new impactor (setup_newton() builds it on the regrouped copies)
+    // at the converged state's place.
+    if (impactor)
+      impactor->move_to(t_previous);
     assembler.assemble_load(loads, t_previous, newton->external_load);
     update_residual(newton->converged_solution, nullptr);
     newton->previous_residual = newton->residual;

@@ -84,6 +84,10 @@ namespace amfrac
     newton->external_work               = external_work;
     newton->remeshing_energy            = remeshing_energy;
     newton->plastic_work                = plastic_work;
+    // A prescribed impactor's last converged force and centre start the
+    // trapezoidal work of the step solved again after a crack insertion.
+    newton->sphere_force  = old.sphere_force;
+    newton->sphere_center = old.sphere_center;
     make_constraints(0., newton->increment_constraints, true);
     const IndexSet &owned    = dof_layer.locally_owned_dofs();
     const IndexSet &relevant = dof_layer.locally_relevant_dofs();

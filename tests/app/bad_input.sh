@@ -568,14 +568,8 @@ end
 subsection Adaptivity
   set Refine every = 1
 end"
-# Crack insertion with a free impactor (explicit), not with a prescribed
-# one (static) or with the impactor's friction.
-expect impactor_cracks_static "Impactor/Face" "$base
-$impactor
-$prescribed
-subsection Crack insertion
-  set Criterion = hoffman
-end"
+# Crack insertion with a free or a prescribed impactor, not with the
+# impactor's friction.
 expect impactor_cracks_friction "Impactor/Friction coefficient" "$base
 $impactor
 $explicit

@@ -4,7 +4,9 @@
 // zero after Gc times its area is dissipated (2 %), the two halves are two
 // fragments, and the ledger balances. Argument: 2 (the scene) or 3 (the
 // same bar in 3D, 2 x 2 elements across); or beam (prm/cracked_beam_2d.prm,
-// transverse cracks that reach a cohesive interface); or friction (the
+// transverse cracks that reach a cohesive interface), or indented_beam
+// (prm/indented_beam_2d.prm, the same beam pressed by a loading nose), or
+// indented_beam_3d (its start in 2D and extruded to 3D); or friction (the
 // bar's crack closed and sheared, with and without Coulomb friction).
 #include "scene.h"
 
@@ -144,9 +146,13 @@ namespace
   /** prm/cracked_beam_2d.prm: the run finishes; cracks only in the
    * bottom 90-degree plies (y < 0.25), through-thickness (vertical faces);
    * interface 1 above them damaged where they meet it; the ledger
-   * balances to 1 % of the external work. */
+   * balances to 1 % of the external work. With indented
+   * (prm/indented_beam_2d.prm, the nose a prescribed impactor): the same,
+   * the ledger (with the nose's work and contact energy) at every step,
+   * and the nose pushing at every step with a penetration the penalty
+   * keeps small. */
   void
-  check_beam(const std::string &file)
+  check_beam(const std::string &file, const bool indented)
   {
     const auto simulator = amfrac_test::run_scene<2>(
       file, "subsection Output\n set Field format = none\nend\n");
@@ -168,6 +174,69 @@ namespace
     CHECK(history.value(last, "dissipated_cracks") > 0);
     CHECK(std::abs(history.value(last, "balance_error"))
           < 0.01 * history.value(last, "external_work"));
+    if (!indented)
+      return;
+    // Without the nose's last force and centre carried over a crack
+    // insertion, its work jumps by F . c at every insertion.
+    for (std::size_t r = 0; r < history.n_rows(); ++r)
+      {
+        CHECK(std::abs(history.value(r, "balance_error"))
+              < 0.01 * history.value(r, "external_work"));
+        CHECK(history.value(r, "contact_force") > 0);
+        CHECK(history.value(r, "penetration") < 1e-3);
+      }
+    // The nose travels 1.5 mm from touching the top face at y = 1.
+    CHECK_CLOSE(history.value(last, "impactor_position"), 1 - 1.5 + 5, 1e-12);
+  }
+  /** prm/indented_beam_2d.prm's first part (@p short_prm appended) in
+   * 2D and extruded to 3D (0.5 mm wide, one element across, held in y on
+   * both sides: plane strain; the nose a cylinder along y): at every step
+   * the 3D run's nose force, external work and dissipation are half the
+   * 2D ones per mm (1e-8), with the same crack faces and Newton
+   * iterations: the static crack insertion with a prescribed impactor in
+   * 3D regroups the cylinder's nodes as in 2D. */
+  void
+  check_indented_beam_extruded(const std::string &file,
+                               const std::string &short_prm)
+  {
+    const std::string shortened = file_text(short_prm);
+    const auto        flat      = amfrac_test::run_scene<2>(
+      file, shortened + "subsection Output\n set Directory = output_2d\nend\n");
+    const auto extruded = amfrac_test::run_scene<3>(
+      file,
+      shortened
+        + "set Dimension = 3\n"
+          "subsection Geometry\n set Width = 0.5\n"
+          " set Elements along width = 1\nend\n"
+          "subsection Boundary conditions\n"
+          " subsection z-\n  set Type = displacement\n"
+          "  set Components = z\n"
+          "  set Where = abs(x - 1) < 1e-9 || abs(x - 23) < 1e-9\n end\n"
+          " subsection x-\n  set Where = z < 1e-9\n end\n"
+          " subsection y-\n  set Where =\n end\n"
+          " subsection y+\n  set Type = displacement\n"
+          "  set Components = y\n end\nend\n"
+          "subsection Impactor\n set Face = z+\n set Shape = cylinder\n"
+          " set Axis = 0, 1, 0\n set Center = 12, 0, 6\n"
+          " set Velocity = 0, 0, -1.5\nend\n"
+          "subsection Output\n set Directory = output_3d\nend\n");
+    const History &a = flat->history(), &b = extruded->history();
+    CHECK(a.n_rows() == b.n_rows());
+    if (a.n_rows() != b.n_rows())
+      return;
+    const double width = 0.5;
+    for (std::size_t r = 0; r < a.n_rows(); ++r)
+      {
+        CHECK_CLOSE(b.value(r, "time"), a.value(r, "time"), 1e-12);
+        for (const std::string column :
+             {"contact_force", "external_work", "dissipated_cracks"})
+          CHECK(std::abs(b.value(r, column) - width * a.value(r, column))
+                <= 1e-8 * width * std::abs(a.value(r, "external_work")));
+        CHECK(b.value(r, "crack_faces") == a.value(r, "crack_faces"));
+        CHECK(b.value(r, "newton_iterations")
+              == a.value(r, "newton_iterations"));
+      }
+    CHECK(a.value(a.n_rows() - 1, "crack_faces") >= 10);
   }
   /** The bar in explicit dynamics (tests/app/explicit_cracked_bar.prm
    * appended): it breaks at x = 2 only, into two fragments, after Gc
@@ -374,7 +443,11 @@ main(int argc, char *argv[])
   if (case_name == "2")
     check_bar<2>(argv[2], "");
   else if (case_name == "beam")
-    check_beam(argv[2]);
+    check_beam(argv[2], false);
+  else if (case_name == "indented_beam")
+    check_beam(argv[2], true);
+  else if (case_name == "indented_beam_3d")
+    check_indented_beam_extruded(argv[2], argv[3]);
   else if (case_name == "friction")
     check_friction(argv[2]);
   else if (case_name == "refined_2")
