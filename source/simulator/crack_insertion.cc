@@ -607,7 +607,8 @@ namespace amfrac
     // trapezoidal rule of the external work of the step solved again.
     newton->converged_solution = converged;
     // The new impactor (setup_newton() builds it on the regrouped copies)
-    // at the converged state's place.
+    // placed at t_previous, so that the converged state's residual holds
+    // its contact.
     if (impactor)
       impactor->move_to(t_previous);
     assembler.assemble_load(loads, t_previous, newton->external_load);

@@ -80,14 +80,16 @@ namespace amfrac
     const double       external_work    = old.external_work;
     const double       remeshing_energy = old.remeshing_energy;
     const double       plastic_work     = old.plastic_work;
-    newton                              = std::make_unique<NewtonState>();
-    newton->external_work               = external_work;
-    newton->remeshing_energy            = remeshing_energy;
-    newton->plastic_work                = plastic_work;
     // A prescribed impactor's last converged force and centre start the
     // trapezoidal work of the step solved again after a crack insertion.
-    newton->sphere_force  = old.sphere_force;
-    newton->sphere_center = old.sphere_center;
+    const Tensor<1, dim> sphere_force  = old.sphere_force;
+    const Tensor<1, dim> sphere_center = old.sphere_center;
+    newton                             = std::make_unique<NewtonState>();
+    newton->external_work              = external_work;
+    newton->remeshing_energy           = remeshing_energy;
+    newton->plastic_work               = plastic_work;
+    newton->sphere_force               = sphere_force;
+    newton->sphere_center              = sphere_center;
     make_constraints(0., newton->increment_constraints, true);
     const IndexSet &owned    = dof_layer.locally_owned_dofs();
     const IndexSet &relevant = dof_layer.locally_relevant_dofs();

@@ -176,6 +176,8 @@ namespace
           < 0.01 * history.value(last, "external_work"));
     if (!indented)
       return;
+    // As many cracks as under the prescribed deflection (163 both).
+    CHECK(history.value(last, "crack_faces") >= 150);
     // Without the nose's last force and centre carried over a crack
     // insertion, its work jumps by F . c at every insertion.
     for (std::size_t r = 0; r < history.n_rows(); ++r)
@@ -192,9 +194,9 @@ namespace
    * 2D and extruded to 3D (0.5 mm wide, one element across, held in y on
    * both sides: plane strain; the nose a cylinder along y): at every step
    * the 3D run's nose force, external work and dissipation are half the
-   * 2D ones per mm (1e-8), with the same crack faces and Newton
-   * iterations: the static crack insertion with a prescribed impactor in
-   * 3D regroups the cylinder's nodes as in 2D. */
+   * 2D ones per mm (1e-8 of each one's largest value), with the same crack
+   * faces and Newton iterations: the static crack insertion with a prescribed
+   * impactor in 3D regroups the cylinder's nodes as in 2D. */
   void
   check_indented_beam_extruded(const std::string &file,
                                const std::string &short_prm)
@@ -225,18 +227,23 @@ namespace
     if (a.n_rows() != b.n_rows())
       return;
     const double width = 0.5;
+    for (const std::string column :
+         {"contact_force", "external_work", "dissipated_cracks"})
+      {
+        const double scale = width * amfrac_test::largest(a, column);
+        CHECK(scale > 0);
+        for (std::size_t r = 0; r < a.n_rows(); ++r)
+          CHECK(std::abs(b.value(r, column) - width * a.value(r, column))
+                <= 1e-8 * scale);
+      }
     for (std::size_t r = 0; r < a.n_rows(); ++r)
       {
         CHECK_CLOSE(b.value(r, "time"), a.value(r, "time"), 1e-12);
-        for (const std::string column :
-             {"contact_force", "external_work", "dissipated_cracks"})
-          CHECK(std::abs(b.value(r, column) - width * a.value(r, column))
-                <= 1e-8 * width * std::abs(a.value(r, "external_work")));
         CHECK(b.value(r, "crack_faces") == a.value(r, "crack_faces"));
         CHECK(b.value(r, "newton_iterations")
               == a.value(r, "newton_iterations"));
       }
-    CHECK(a.value(a.n_rows() - 1, "crack_faces") >= 10);
+    CHECK(a.value(a.n_rows() - 1, "crack_faces") >= 30);
   }
   /** The bar in explicit dynamics (tests/app/explicit_cracked_bar.prm
    * appended): it breaks at x = 2 only, into two fragments, after Gc
