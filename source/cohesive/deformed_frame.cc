@@ -3,6 +3,7 @@
 // primitives it is made of: the normalization v / |v| and (in 3D) the
 // cross product. unit/deformed_interface_frame checks every derivative
 // against central differences.
+#include <amfrac/base/cross_matrix.h>
 #include <amfrac/cohesive/deformed_frame.h>
 #include <deal.II/base/symmetric_tensor.h>
 
@@ -33,17 +34,6 @@ namespace amfrac
         return -(outer_product(w, u) + outer_product(u, w)
                  + (w * u) * (I - 3 * outer_product(u, u)))
                / (length * length);
-      }
-
-      /** [a]x with [a]x v = a x v. */
-      Tensor<2, 3>
-      cross_matrix(const Tensor<1, 3> &a)
-      {
-        Tensor<2, 3> s;
-        s[0][1] = -a[2], s[0][2] = a[1];
-        s[1][0] = a[2], s[1][2] = -a[0];
-        s[2][0] = -a[1], s[2][1] = a[0];
-        return s;
       }
 
       /** The quarter turn that takes the tangent to the normal in 2D. */

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <amfrac/base/concatenate.h>
+#include <amfrac/base/cross_matrix.h>
 #include <amfrac/contact/body_contact.h>
 #include <chrono>
 #include <cmath>
@@ -487,14 +488,39 @@ namespace amfrac
               break;
           }
       }
+    std::array<bool, dim - 1> past_edge;
     for (unsigned int d = 0; d < dim - 1; ++d)
       {
         if (!(xi[d] > -inside && xi[d] < 1 + inside))
           return false;
-        if (clamped && (xi[d] < 0 || xi[d] > 1))
+        past_edge[d] = xi[d] < 0 || xi[d] > 1;
+        if (clamped && past_edge[d])
           *clamped = true;
         xi[d] = std::clamp(xi[d], 0., 1.);
       }
+    if constexpr (dim == 3)
+      if (past_edge[0] != past_edge[1])
+        {
+          // Past one edge only: the closest point of that (straight) edge,
+          // so that the other coordinate is a closest point's too (the
+          // tangent differentiates that condition).
+          const unsigned int along   = past_edge[0] ? 1 : 0;
+          Point<dim - 1>     ends[2] = {xi, xi};
+          ends[0][along]             = 0;
+          ends[1][along]             = 1;
+          Point<dim> end_points[2];
+          for (unsigned int e = 0; e < 2; ++e)
+            {
+              const auto N = shape_values(ends[e]);
+              for (unsigned int a = 0; a < n_face_vertices; ++a)
+                end_points[e] += N[a] * v[a];
+            }
+          const Tensor<1, dim> edge = end_points[1] - end_points[0];
+          xi[along]
+            = std::clamp((x - end_points[0]) * edge / edge.norm_square(),
+                         0.,
+                         1.);
+        }
     const auto N = shape_values(xi);
     on_face      = Point<dim>();
     for (unsigned int a = 0; a < n_face_vertices; ++a)
@@ -871,66 +897,6 @@ namespace amfrac
 
 
   template <int dim>
-  std::array<Tensor<1, dim>, BodyContact<dim>::n_face_vertices + 1>
-  BodyContact<dim>::gap_gradient(const Pair &pair) const
-  {
-    // g = (x - x(xi)) . n(xi): dg = n . (du - sum N_a du_a) + r . dn at
-    // the closest point (xi fixed: where it moves freely, r . dx/dxi
-    // = 0). r = x - x(xi) is along n inside the face, so r . dn = 0
-    // there; a node that has passed the face's edge (xi clamped) has a
-    // tangential r, and then the face's turning moves its gap.
-    const Face                             &face = faces[pair.face];
-    const auto                              N    = shape_values(pair.xi);
-    std::array<Point<dim>, n_face_vertices> v;
-    for (unsigned int a = 0; a < n_face_vertices; ++a)
-      v[a] = positions[face.nodes[a]];
-    std::array<Tensor<1, dim>, n_face_vertices + 1> gradient;
-    gradient[0] = pair.n;
-    for (unsigned int a = 0; a < n_face_vertices; ++a)
-      gradient[a + 1] = -N[a] * pair.n;
-    const Tensor<1, dim> r = offset(pair.slave, face, pair.xi);
-    // n = sign c / |c|, dn = sign (I - n n^T) dc / |c|, so r . dn =
-    // r_t . dc sign / |c| with r_t the tangential part of r.
-    const Tensor<1, dim> r_t = r - (r * pair.n) * pair.n;
-    if (r_t.norm_square() == 0)
-      return gradient;
-    if constexpr (dim == 2)
-      {
-        // c = R (v_1 - v_0), R (a, b) = (b, -a); r_t . R t = R^T r_t . t.
-        const Tensor<1, dim> t = v[1] - v[0];
-        Tensor<1, dim>       w;
-        w[0] = -r_t[1];
-        w[1] = r_t[0];
-        w *= face.sign / t.norm();
-        gradient[1] -= w;
-        gradient[2] += w;
-      }
-    else
-      {
-        // c = d0 x d1, d_i = sum_a dN_a/dxi_i v_a:
-        // r_t . dc = dd0 . (d1 x r_t) + dd1 . (r_t x d0).
-        const Point<dim - 1> &xi = pair.xi;
-        const Tensor<1, dim>  d0
-          = (v[1] - v[0]) * (1 - xi[1]) + (v[3] - v[2]) * xi[1];
-        const Tensor<1, dim> d1
-          = (v[2] - v[0]) * (1 - xi[0]) + (v[3] - v[1]) * xi[0];
-        const Tensor<1, dim>        c     = cross_product_3d(d0, d1);
-        const double                scale = face.sign / c.norm();
-        const Tensor<1, dim>        a0    = scale * cross_product_3d(d1, r_t);
-        const Tensor<1, dim>        a1    = scale * cross_product_3d(r_t, d0);
-        const std::array<double, 4> dN0{
-          {-(1 - xi[1]), 1 - xi[1], -xi[1], xi[1]}};
-        const std::array<double, 4> dN1{
-          {-(1 - xi[0]), -xi[0], 1 - xi[0], xi[0]}};
-        for (unsigned int a = 0; a < n_face_vertices; ++a)
-          gradient[a + 1] += dN0[a] * a0 + dN1[a] * a1;
-      }
-    return gradient;
-  }
-
-
-
-  template <int dim>
   void
   BodyContact<dim>::commit()
   {
@@ -944,43 +910,207 @@ namespace amfrac
 
 
   template <int dim>
-  std::array<Tensor<2, dim>, BodyContact<dim>::n_face_vertices + 1>
-  BodyContact<dim>::force_gradient(const Pair &pair) const
+  typename BodyContact<dim>::PairTangent
+  BodyContact<dim>::pair_tangent(const Pair &pair) const
   {
-    // The force on the node, f = p n + f_t with p = -k g: df_n/du_J
-    // = -k n (x) dg/du_J. Sticking, f_t = f_t,old - k_t P slip with
-    // P = I - n n^T and slip = sum_J c_J (u_J - u_J,old): -k_t c_J P.
-    // Slipping, f_t = mu p t, t = trial / |trial|: the cone's radius
-    // follows p, and the direction turns with the trial force. The normal's
-    // turning is left out (as in dg, it scales with the gap).
-    const auto   N        = shape_values(pair.xi);
-    const auto   gradient = gap_gradient(pair);
-    const double k        = -(nodes[pair.slave].area_penalty * pair.n);
-    std::array<double, n_face_vertices + 1> c{{1.}};
+    // The force f on the node (F_s = f) and -N_a f on the face's nodes
+    // depend on u through the nodes, the closest point xi and the normal
+    // n(xi): f_n = -k g n with k = -(A . n), and the friction's stick
+    // force, measured in the tangent plane of n. All of them are
+    // linearized here (the node-to-face contact's full tangent), so that
+    // Newton converges quadratically however far the penalty lets the
+    // bodies overlap.
+    const Face                             &face = faces[pair.face];
+    const Point<dim - 1>                   &xi   = pair.xi;
+    const Tensor<1, dim>                   &n    = pair.n;
+    const auto                              N    = shape_values(xi);
+    std::array<Point<dim>, n_face_vertices> v;
+    for (unsigned int a = 0; a < n_face_vertices; ++a)
+      v[a] = positions[face.nodes[a]];
+    // dN_a/dxi_i and the face's tangents x_,i.
+    std::array<Tensor<1, dim - 1>, n_face_vertices> dN;
+    std::array<Tensor<1, dim>, dim - 1>             tangents;
+    Tensor<1, dim>                                  twist; // x_,01
+    if constexpr (dim == 2)
+      {
+        dN[0][0] = -1, dN[1][0] = 1;
+        tangents[0] = v[1] - v[0];
+      }
+    else
+      {
+        dN[0][0] = -(1 - xi[1]), dN[1][0] = 1 - xi[1];
+        dN[2][0] = -xi[1], dN[3][0] = xi[1];
+        dN[0][1] = -(1 - xi[0]), dN[1][1] = -xi[0];
+        dN[2][1] = 1 - xi[0], dN[3][1] = xi[0];
+        tangents[0] = (v[1] - v[0]) * (1 - xi[1]) + (v[3] - v[2]) * xi[1];
+        tangents[1] = (v[2] - v[0]) * (1 - xi[0]) + (v[3] - v[1]) * xi[0];
+        twist       = v[0] - v[1] - v[2] + v[3];
+      }
+    std::array<double, n_members> c{{1.}};
     for (unsigned int a = 0; a < n_face_vertices; ++a)
       c[a + 1] = -N[a];
-    const Tensor<2, dim> P
-      = unit_symmetric_tensor<dim>() - outer_product(pair.n, pair.n);
-    std::array<Tensor<2, dim>, n_face_vertices + 1> B;
-    for (unsigned int J = 0; J < B.size(); ++J)
+    const Tensor<1, dim> r = offset(pair.slave, face, xi);
+
+    // dxi/du_J from the closest point's condition r . x_,i = 0 on the
+    // coordinates that are free (a node past an edge has its coordinate
+    // clamped to 0 or 1: fixed). sum_j (x_,i . x_,j - r . x_,ij) dxi_j
+    // = sum_J (c_J x_,i + dN_J,i r) . du_J.
+    std::array<std::array<Tensor<1, dim>, dim - 1>, n_members> dxi{};
+    {
+      std::array<bool, dim - 1> free;
+      for (unsigned int i = 0; i < dim - 1; ++i)
+        free[i] = xi[i] > 0 && xi[i] < 1;
+      Tensor<2, dim - 1> M;
+      for (unsigned int i = 0; i < dim - 1; ++i)
+        for (unsigned int j = 0; j < dim - 1; ++j)
+          M[i][j] = tangents[i] * tangents[j] - (i != j ? r * twist : 0.);
+      for (unsigned int i = 0; i < dim - 1; ++i)
+        if (!free[i])
+          for (unsigned int j = 0; j < dim - 1; ++j)
+            M[i][j] = M[j][i] = (i == j);
+      const Tensor<2, dim - 1> inverse = invert(M);
+      for (unsigned int J = 0; J < n_members; ++J)
+        {
+          std::array<Tensor<1, dim>, dim - 1> rhs;
+          for (unsigned int i = 0; i < dim - 1; ++i)
+            if (free[i])
+              rhs[i] = c[J] * tangents[i] + (J > 0 ? dN[J - 1][i] * r : 0 * r);
+          for (unsigned int i = 0; i < dim - 1; ++i)
+            for (unsigned int j = 0; j < dim - 1; ++j)
+              dxi[J][i] += inverse[i][j] * rhs[j];
+        }
+    }
+
+    // dn/du_J = sign (I - n n^T) dc/du_J / |c|, with c the face's normal
+    // before scaling: R (v_1 - v_0) in 2D, x_,0 x x_,1 in 3D (which moves
+    // with xi too).
+    std::array<Tensor<2, dim>, n_members> dn;
+    {
+      const Tensor<2, dim> across
+        = unit_symmetric_tensor<dim>() - outer_product(n, n);
+      std::array<Tensor<2, dim>, n_members> dc;
+      double                                length;
+      if constexpr (dim == 2)
+        {
+          Tensor<2, dim> R;
+          R[0][1] = 1, R[1][0] = -1;
+          dc[1]  = -R;
+          dc[2]  = R;
+          length = tangents[0].norm();
+        }
+      else
+        {
+          const Tensor<1, dim> &d0 = tangents[0], &d1 = tangents[1];
+          for (unsigned int a = 0; a < n_face_vertices; ++a)
+            dc[a + 1]
+              = -dN[a][0] * cross_matrix(d1) + dN[a][1] * cross_matrix(d0);
+          const Tensor<1, dim> along_0 = cross_product_3d(d0, twist),
+                               along_1 = cross_product_3d(twist, d1);
+          for (unsigned int J = 0; J < n_members; ++J)
+            dc[J] += outer_product(along_0, dxi[J][0])
+                     + outer_product(along_1, dxi[J][1]);
+          length = cross_product_3d(d0, d1).norm();
+        }
+      for (unsigned int J = 0; J < n_members; ++J)
+        dn[J] = (face.sign / length) * across * dc[J];
+    }
+
+    // The normal force and its gradients: dg = c_J n + dn^T r (x_,i . n
+    // = 0), dk = -dn^T A.
+    const Tensor<1, dim>                 &A = nodes[pair.slave].area_penalty;
+    const double                          k = -(A * n), g = pair.gap;
+    std::array<Tensor<1, dim>, n_members> dk, dg;
+    std::array<Tensor<2, dim>, n_members> B; // df/du_J
+    for (unsigned int J = 0; J < n_members; ++J)
       {
-        B[J] = -k * outer_product(pair.n, gradient[J]);
-        if (friction_coefficient == 0)
-          continue;
+        dk[J] = -(transpose(dn[J]) * A);
+        dg[J] = c[J] * n + transpose(dn[J]) * r;
+        B[J]  = -g * outer_product(n, dk[J]) - k * outer_product(n, dg[J])
+               - (k * g) * dn[J];
+      }
+    Tensor<1, dim> f = -k * g * n;
+    if (friction_coefficient > 0)
+      f += add_friction_gradient(pair, N, dN, dxi, dn, dk, dg, B);
+
+    // K_IJ = -(c_I df/du_J + f (x) dc_I/du_J), dc_a = -dN_a . dxi.
+    PairTangent K;
+    for (unsigned int I = 0; I < n_members; ++I)
+      for (unsigned int J = 0; J < n_members; ++J)
+        {
+          K[I][J] = -c[I] * B[J];
+          if (I > 0)
+            for (unsigned int i = 0; i < dim - 1; ++i)
+              K[I][J] += dN[I - 1][i] * outer_product(f, dxi[J][i]);
+        }
+    return K;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  BodyContact<dim>::add_friction_gradient(
+    const Pair                                                       &pair,
+    const std::array<double, n_face_vertices>                        &N,
+    const std::array<Tensor<1, dim - 1>, n_face_vertices>            &dN,
+    const std::array<std::array<Tensor<1, dim>, dim - 1>, n_members> &dxi,
+    const std::array<Tensor<2, dim>, n_members>                      &dn,
+    const std::array<Tensor<1, dim>, n_members>                      &dk,
+    const std::array<Tensor<1, dim>, n_members>                      &dg,
+    std::array<Tensor<2, dim>, n_members>                            &B) const
+  {
+    // As evaluate(): slip = P w with w the node's displacement increment
+    // relative to the face point's, P = I - n n^T; the stick force
+    // trial = P f_old - k_t slip, k_t = tangential_factor k; returned
+    // onto the cone mu p if it slips.
+    const Face           &face = faces[pair.face];
+    const Tensor<1, dim> &n    = pair.n;
+    const Tensor<2, dim> P = unit_symmetric_tensor<dim>() - outer_product(n, n);
+    std::array<Tensor<1, dim>, n_face_vertices> increment;
+    Tensor<1, dim> w = displacements[pair.slave] - previous[pair.slave];
+    for (unsigned int a = 0; a < n_face_vertices; ++a)
+      {
+        increment[a] = displacements[face.nodes[a]] - previous[face.nodes[a]];
+        w -= N[a] * increment[a];
+      }
+    const History       &h     = history[pair.slave];
+    const Tensor<1, dim> old   = h.in_contact ? h.friction : Tensor<1, dim>();
+    const Tensor<1, dim> slip  = P * w;
+    const double         k     = -(nodes[pair.slave].area_penalty * n);
+    const double         p     = -k * pair.gap;
+    const double         size  = pair.trial.norm();
+    const Tensor<1, dim> t     = size > 0 ? pair.trial / size : pair.trial;
+    const double         limit = friction_coefficient * p;
+    for (unsigned int J = 0; J < n_members; ++J)
+      {
+        // dw/du_J: the node's or the face point's increment, and the face
+        // point moving along the face.
+        Tensor<2, dim> dw
+          = (J == 0 ? 1. : -N[J - 1]) * unit_symmetric_tensor<dim>();
+        for (unsigned int a = 0; a < n_face_vertices; ++a)
+          for (unsigned int i = 0; i < dim - 1; ++i)
+            dw -= dN[a][i] * outer_product(increment[a], dxi[J][i]);
+        // d(P x) = P dx - (n . x) dn - n (dn^T x).
+        const auto turned = [&](const Tensor<1, dim> &x) {
+          return -(n * x) * dn[J] - outer_product(n, transpose(dn[J]) * x);
+        };
+        const Tensor<2, dim> dslip = P * dw + turned(w);
+        const Tensor<2, dim> dtrial
+          = turned(old) - tangential_factor * outer_product(slip, dk[J])
+            - pair.kt * dslip;
         if (!pair.slipping)
-          B[J] -= pair.kt * c[J] * P;
+          B[J] += dtrial;
         else
           {
-            const double         size  = pair.trial.norm();
-            const Tensor<1, dim> t     = pair.trial / size;
-            const double         limit = friction_coefficient * k * -pair.gap;
-            const Tensor<2, dim> across
-              = unit_symmetric_tensor<dim>() - outer_product(t, t);
-            B[J] += -friction_coefficient * k * outer_product(t, gradient[J])
-                    - (limit / size) * pair.kt * c[J] * (across * P);
+            const Tensor<1, dim> dlimit
+              = -friction_coefficient * (pair.gap * dk[J] + k * dg[J]);
+            B[J] += outer_product(t, dlimit)
+                    + (limit / size)
+                        * ((unit_symmetric_tensor<dim>() - outer_product(t, t))
+                           * dtrial);
           }
       }
-    return B;
+    return pair.slipping ? limit * t : pair.trial;
   }
 
 
@@ -990,20 +1120,16 @@ namespace amfrac
   BodyContact<dim>::add_tangent(const AffineConstraints<double> &constraints,
                                 TrilinosWrappers::SparseMatrix  &tangent) const
   {
-    constexpr unsigned int n_members = 1 + n_face_vertices;
-    std::vector<double>    row_values(dim * n_members);
+    std::vector<double> row_values(dim * n_members);
     for (const Pair &pair : pairs)
       {
-        const auto                    dofs = pair_dofs(pair.slave, pair.face);
-        const auto                    N    = shape_values(pair.xi);
-        const auto                    B    = force_gradient(pair);
-        std::array<double, n_members> c{{1.}};
+        const auto        dofs = pair_dofs(pair.slave, pair.face);
+        const PairTangent K    = pair_tangent(pair);
         std::array<unsigned int, n_members> members{{pair.slave}};
         for (unsigned int a = 0; a < n_face_vertices; ++a)
-          c[a + 1] = -N[a], members[a + 1] = faces[pair.face].nodes[a];
-        // The residual's share is -c_I f: K_IJ = -c_I df/du_J, on the rows
-        // this rank owns and that are free (a supported row keeps the
-        // bulk's diagonal only).
+          members[a + 1] = faces[pair.face].nodes[a];
+        // On the rows this rank owns and that are free (a supported row
+        // keeps the bulk's diagonal only).
         for (unsigned int I = 0; I < n_members; ++I)
           if (local_of_node[members[I]] >= 0)
             for (unsigned int d = 0; d < dim; ++d)
@@ -1013,7 +1139,7 @@ namespace amfrac
                   continue;
                 for (unsigned int J = 0; J < n_members; ++J)
                   for (unsigned int e = 0; e < dim; ++e)
-                    row_values[dim * J + e] = -c[I] * B[J][d][e];
+                    row_values[dim * J + e] = K[I][J][d][e];
                 tangent.add(row, dofs.size(), dofs.data(), row_values.data());
               }
       }
@@ -1030,15 +1156,18 @@ namespace amfrac
     double *entries = product.begin();
     for (const Pair &pair : pairs)
       {
-        const Face    &face = faces[pair.face];
-        const auto     N    = shape_values(pair.xi);
-        const auto     B    = force_gradient(pair);
-        Tensor<1, dim> df   = B[0] * gathered[pair.slave];
+        const Face                         &face = faces[pair.face];
+        const PairTangent                   K    = pair_tangent(pair);
+        std::array<unsigned int, n_members> members{{pair.slave}};
         for (unsigned int a = 0; a < n_face_vertices; ++a)
-          df += B[a + 1] * gathered[face.nodes[a]];
-        add_to_owned(entries, pair.slave, -df);
-        for (unsigned int a = 0; a < n_face_vertices; ++a)
-          add_to_owned(entries, face.nodes[a], N[a] * df);
+          members[a + 1] = face.nodes[a];
+        for (unsigned int I = 0; I < n_members; ++I)
+          {
+            Tensor<1, dim> row;
+            for (unsigned int J = 0; J < n_members; ++J)
+              row += K[I][J] * gathered[members[J]];
+            add_to_owned(entries, members[I], row);
+          }
       }
   }
 

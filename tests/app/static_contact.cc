@@ -158,7 +158,10 @@ namespace
               << relative_balance(h) << ", Newton iterations "
               << largest(h, "newton_iterations") << std::endl;
     CHECK(force > 0);
-    CHECK_RELATIVE(h.value(last, "reaction_z-_z"), force, 1e-8);
+    // To what Newton accepts: a residual of 1e-8 (Residual tolerance) of
+    // the force scale, 1.1e4 N here, is 3.6e-6 of the force (measured:
+    // 5.8e-8, in 2 iterations per step with the exact contact tangent).
+    CHECK_RELATIVE(h.value(last, "reaction_z-_z"), force, 1e-5);
     CHECK(std::abs(h.value(last, "reaction_z-_x")) < 1e-3 * force);
     CHECK(relative_balance(h) < 5e-3);
   }

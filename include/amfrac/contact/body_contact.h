@@ -339,14 +339,27 @@ namespace amfrac
       double         kt       = 0;
       bool           slipping = false;
     };
-    /** d g / d u of a pair at the last evaluation: for the node, then
-     * for its face's nodes. */
-    std::array<Tensor<1, dim>, n_face_vertices + 1>
-    gap_gradient(const Pair &pair) const;
-    /** d f / d u of the force f on a pair's node, for the node, then for
-     * its face's nodes. */
-    std::array<Tensor<2, dim>, n_face_vertices + 1>
-    force_gradient(const Pair &pair) const;
+    /** A pair's members: its node, then its face's nodes. */
+    static constexpr unsigned int n_members = n_face_vertices + 1;
+    /** A pair's share of the tangent at the last evaluation: block
+     * [I][J] is d(-F_I)/du_J, with F_I the contact force on member I. */
+    using PairTangent
+      = std::array<std::array<Tensor<2, dim>, n_members>, n_members>;
+    PairTangent
+    pair_tangent(const Pair &pair) const;
+    /** The friction's part of pair_tangent(): adds d f_t/du_J to @p B
+     * and returns f_t, from the pair's shape values, their gradients in
+     * xi, and the gradients of xi, n, k and the gap. */
+    Tensor<1, dim>
+    add_friction_gradient(
+      const Pair                                                       &pair,
+      const std::array<double, n_face_vertices>                        &N,
+      const std::array<Tensor<1, dim - 1>, n_face_vertices>            &dN,
+      const std::array<std::array<Tensor<1, dim>, dim - 1>, n_members> &dxi,
+      const std::array<Tensor<2, dim>, n_members>                      &dn,
+      const std::array<Tensor<1, dim>, n_members>                      &dk,
+      const std::array<Tensor<1, dim>, n_members>                      &dg,
+      std::array<Tensor<2, dim>, n_members> &B) const;
     /** Scratch of evaluate(), kept to reuse its memory: the faces' boxes,
      * the grid (cell key, face) sorted, the pairs found. */
     std::vector<std::pair<Point<dim>, Point<dim>>>      boxes;
