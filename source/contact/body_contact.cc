@@ -968,6 +968,13 @@ namespace amfrac
         if (!free[i])
           for (unsigned int j = 0; j < dim - 1; ++j)
             M[i][j] = M[j][i] = (i == j);
+      // Where the curvature term spoils the matrix, project() took
+      // Gauss-Newton steps; so does the tangent (finite, if not exact, on a
+      // strongly warped face pressed deep).
+      if constexpr (dim == 3)
+        if (!(determinant(M) > 1e-12 * M[0][0] * M[1][1]))
+          M[0][1] = M[1][0]
+            = free[0] && free[1] ? tangents[0] * tangents[1] : 0.;
       const Tensor<2, dim - 1> inverse = invert(M);
       for (unsigned int J = 0; J < n_members; ++J)
         {
@@ -1116,6 +1123,30 @@ namespace amfrac
 
 
   template <int dim>
+  std::array<unsigned int, BodyContact<dim>::n_members>
+  BodyContact<dim>::members_of(const Pair &pair) const
+  {
+    std::array<unsigned int, n_members> members{{pair.slave}};
+    for (unsigned int a = 0; a < n_face_vertices; ++a)
+      members[a + 1] = faces[pair.face].nodes[a];
+    return members;
+  }
+
+
+
+  template <int dim>
+  bool
+  BodyContact<dim>::owns_a_member(const Pair &pair) const
+  {
+    for (const unsigned int node : members_of(pair))
+      if (local_of_node[node] >= 0)
+        return true;
+    return false;
+  }
+
+
+
+  template <int dim>
   void
   BodyContact<dim>::add_tangent(const AffineConstraints<double> &constraints,
                                 TrilinosWrappers::SparseMatrix  &tangent) const
@@ -1123,11 +1154,13 @@ namespace amfrac
     std::vector<double> row_values(dim * n_members);
     for (const Pair &pair : pairs)
       {
-        const auto        dofs = pair_dofs(pair.slave, pair.face);
-        const PairTangent K    = pair_tangent(pair);
-        std::array<unsigned int, n_members> members{{pair.slave}};
-        for (unsigned int a = 0; a < n_face_vertices; ++a)
-          members[a + 1] = faces[pair.face].nodes[a];
+        // Every rank holds all pairs; each computes the tangents of those
+        // that reach its rows only.
+        if (!owns_a_member(pair))
+          continue;
+        const auto        dofs    = pair_dofs(pair.slave, pair.face);
+        const PairTangent K       = pair_tangent(pair);
+        const auto        members = members_of(pair);
         // On the rows this rank owns and that are free (a supported row
         // keeps the bulk's diagonal only).
         for (unsigned int I = 0; I < n_members; ++I)
@@ -1156,11 +1189,10 @@ namespace amfrac
     double *entries = product.begin();
     for (const Pair &pair : pairs)
       {
-        const Face                         &face = faces[pair.face];
-        const PairTangent                   K    = pair_tangent(pair);
-        std::array<unsigned int, n_members> members{{pair.slave}};
-        for (unsigned int a = 0; a < n_face_vertices; ++a)
-          members[a + 1] = face.nodes[a];
+        if (!owns_a_member(pair))
+          continue;
+        const PairTangent K       = pair_tangent(pair);
+        const auto        members = members_of(pair);
         for (unsigned int I = 0; I < n_members; ++I)
           {
             Tensor<1, dim> row;

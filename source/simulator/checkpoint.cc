@@ -598,6 +598,7 @@ namespace amfrac
     run.put_integer("newton.step", progress.step);
     run.put_integer("newton.total_iterations", progress.total_iterations);
     run.put_integer("newton.by_dissipation", progress.by_dissipation);
+    run.put_integer("newton.failures_left", progress.failures_left);
     run.put_integers("newton.iterations",
                      std::vector<std::int64_t>(progress.iterations.begin(),
                                                progress.iterations.end()));
@@ -677,7 +678,10 @@ namespace amfrac
       progress.step             = run.get_integer("newton.step");
       progress.total_iterations = run.get_integer("newton.total_iterations");
       progress.by_dissipation   = run.get_integer("newton.by_dissipation");
-      const auto &its           = run.get_integers("newton.iterations");
+      // Checkpoints written before stop 48 did not keep it.
+      progress.failures_left = run.has("newton.failures_left")
+                               && run.get_integer("newton.failures_left") != 0;
+      const auto &its = run.get_integers("newton.iterations");
       progress.iterations.assign(its.begin(), its.end());
       n_factorizations         = run.get_integer("newton.factorizations");
       newton->force_scale      = run.get_scalar("newton.force_scale");

@@ -1200,6 +1200,7 @@ namespace amfrac
         total_iterations = progress.total_iterations;
         by_dissipation   = progress.by_dissipation;
         iterations       = progress.iterations;
+        failures_left    = progress.failures_left;
         if (impactor)
           start_static_impactor(t);
         // The analyses up to t are in the restored buckling table.
@@ -1214,7 +1215,8 @@ namespace amfrac
                    step,
                    total_iterations,
                    by_dissipation,
-                   iterations},
+                   iterations,
+                   failures_left},
                   run,
                   part);
     };

@@ -347,6 +347,11 @@ namespace amfrac
       = std::array<std::array<Tensor<2, dim>, n_members>, n_members>;
     PairTangent
     pair_tangent(const Pair &pair) const;
+    /** A pair's members, and whether this rank owns one of them. */
+    std::array<unsigned int, n_members>
+    members_of(const Pair &pair) const;
+    bool
+    owns_a_member(const Pair &pair) const;
     /** The friction's part of pair_tangent(): adds d f_t/du_J to @p B
      * and returns f_t, from the pair's shape values, their gradients in
      * xi, and the gradients of xi, n, k and the gap. */

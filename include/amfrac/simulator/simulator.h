@@ -464,6 +464,9 @@ namespace amfrac
       unsigned int              step = 0, total_iterations = 0;
       bool                      by_dissipation = false;
       std::vector<unsigned int> iterations;
+      /** Crack insertion: faces still failing when the last step's rounds
+       * (Rounds per step) ran out; the next step may then not be cut. */
+      bool failures_left = false;
     };
     /** The Newton state (NewtonState's converged quantities) and
      * @p progress. */
