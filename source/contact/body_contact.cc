@@ -920,17 +920,18 @@ namespace amfrac
     // linearized here (the node-to-face contact's full tangent), so that
     // Newton converges quadratically however far the penalty lets the
     // bodies overlap.
-    const Face                             &face = faces[pair.face];
-    const Point<dim - 1>                   &xi   = pair.xi;
-    const Tensor<1, dim>                   &n    = pair.n;
-    const auto                              N    = shape_values(xi);
+    const Face           &face = faces[pair.face];
+    const Point<dim - 1> &xi   = pair.xi;
+    const Tensor<1, dim> &n    = pair.n;
+    PairGradients         gradients;
+    auto &[N, dN, dxi, dn, dk, dg] = gradients;
+    N                              = shape_values(xi);
     std::array<Point<dim>, n_face_vertices> v;
     for (unsigned int a = 0; a < n_face_vertices; ++a)
       v[a] = positions[face.nodes[a]];
     // dN_a/dxi_i and the face's tangents x_,i.
-    std::array<Tensor<1, dim - 1>, n_face_vertices> dN;
-    std::array<Tensor<1, dim>, dim - 1>             tangents;
-    Tensor<1, dim>                                  twist; // x_,01
+    std::array<Tensor<1, dim>, dim - 1> tangents;
+    Tensor<1, dim>                      twist; // x_,01
     if constexpr (dim == 2)
       {
         dN[0][0] = -1, dN[1][0] = 1;
@@ -955,7 +956,6 @@ namespace amfrac
     // coordinates that are free (a node past an edge has its coordinate
     // clamped to 0 or 1: fixed). sum_j (x_,i . x_,j - r . x_,ij) dxi_j
     // = sum_J (c_J x_,i + dN_J,i r) . du_J.
-    std::array<std::array<Tensor<1, dim>, dim - 1>, n_members> dxi{};
     {
       std::array<bool, dim - 1> free;
       for (unsigned int i = 0; i < dim - 1; ++i)
@@ -991,7 +991,6 @@ namespace amfrac
     // dn/du_J = sign (I - n n^T) dc/du_J / |c|, with c the face's normal
     // before scaling: R (v_1 - v_0) in 2D, x_,0 x x_,1 in 3D (which moves
     // with xi too).
-    std::array<Tensor<2, dim>, n_members> dn;
     {
       const Tensor<2, dim> across
         = unit_symmetric_tensor<dim>() - outer_product(n, n);
@@ -1026,7 +1025,6 @@ namespace amfrac
     // = 0), dk = -dn^T A.
     const Tensor<1, dim>                 &A = nodes[pair.slave].area_penalty;
     const double                          k = -(A * n), g = pair.gap;
-    std::array<Tensor<1, dim>, n_members> dk, dg;
     std::array<Tensor<2, dim>, n_members> B; // df/du_J
     for (unsigned int J = 0; J < n_members; ++J)
       {
@@ -1037,7 +1035,7 @@ namespace amfrac
       }
     Tensor<1, dim> f = -k * g * n;
     if (friction_coefficient > 0)
-      f += add_friction_gradient(pair, N, dN, dxi, dn, dk, dg, B);
+      f += add_friction_gradient(pair, gradients, B);
 
     // K_IJ = -(c_I df/du_J + f (x) dc_I/du_J), dc_a = -dN_a . dxi.
     PairTangent K;
@@ -1057,19 +1055,21 @@ namespace amfrac
   template <int dim>
   Tensor<1, dim>
   BodyContact<dim>::add_friction_gradient(
-    const Pair                                                       &pair,
-    const std::array<double, n_face_vertices>                        &N,
-    const std::array<Tensor<1, dim - 1>, n_face_vertices>            &dN,
-    const std::array<std::array<Tensor<1, dim>, dim - 1>, n_members> &dxi,
-    const std::array<Tensor<2, dim>, n_members>                      &dn,
-    const std::array<Tensor<1, dim>, n_members>                      &dk,
-    const std::array<Tensor<1, dim>, n_members>                      &dg,
-    std::array<Tensor<2, dim>, n_members>                            &B) const
+    const Pair                            &pair,
+    const PairGradients                   &gradients,
+    std::array<Tensor<2, dim>, n_members> &B) const
   {
     // As evaluate(): slip = P w with w the node's displacement increment
     // relative to the face point's, P = I - n n^T; the stick force
     // trial = P f_old - k_t slip, k_t = tangential_factor k; returned
     // onto the cone mu p if it slips.
+    // References, not a structured binding: the lambda below captures dn.
+    const auto           &N    = gradients.N;
+    const auto           &dN   = gradients.dN;
+    const auto           &dxi  = gradients.dxi;
+    const auto           &dn   = gradients.dn;
+    const auto           &dk   = gradients.dk;
+    const auto           &dg   = gradients.dg;
     const Face           &face = faces[pair.face];
     const Tensor<1, dim> &n    = pair.n;
     const Tensor<2, dim> P = unit_symmetric_tensor<dim>() - outer_product(n, n);

@@ -352,19 +352,24 @@ namespace amfrac
     members_of(const Pair &pair) const;
     bool
     owns_a_member(const Pair &pair) const;
+    /** What pair_tangent() differentiates the friction with: the shape
+     * values at the closest point and their gradients in xi, and the
+     * gradients of xi, the normal, the penalty k and the gap with respect
+     * to each member's displacement. */
+    struct PairGradients
+    {
+      std::array<double, n_face_vertices>                        N;
+      std::array<Tensor<1, dim - 1>, n_face_vertices>            dN;
+      std::array<std::array<Tensor<1, dim>, dim - 1>, n_members> dxi{};
+      std::array<Tensor<2, dim>, n_members>                      dn;
+      std::array<Tensor<1, dim>, n_members>                      dk, dg;
+    };
     /** The friction's part of pair_tangent(): adds d f_t/du_J to @p B
-     * and returns f_t, from the pair's shape values, their gradients in
-     * xi, and the gradients of xi, n, k and the gap. */
+     * and returns f_t. */
     Tensor<1, dim>
-    add_friction_gradient(
-      const Pair                                                       &pair,
-      const std::array<double, n_face_vertices>                        &N,
-      const std::array<Tensor<1, dim - 1>, n_face_vertices>            &dN,
-      const std::array<std::array<Tensor<1, dim>, dim - 1>, n_members> &dxi,
-      const std::array<Tensor<2, dim>, n_members>                      &dn,
-      const std::array<Tensor<1, dim>, n_members>                      &dk,
-      const std::array<Tensor<1, dim>, n_members>                      &dg,
-      std::array<Tensor<2, dim>, n_members> &B) const;
+    add_friction_gradient(const Pair                            &pair,
+                          const PairGradients                   &gradients,
+                          std::array<Tensor<2, dim>, n_members> &B) const;
     /** Scratch of evaluate(), kept to reuse its memory: the faces' boxes,
      * the grid (cell key, face) sorted, the pairs found. */
     std::vector<std::pair<Point<dim>, Point<dim>>>      boxes;
