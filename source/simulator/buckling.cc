@@ -2,6 +2,7 @@
 // Buckling): K_G from its stress, the lowest positive load factors of
 // (K + lambda K_G) v = 0 with the factorization of K the static solve left,
 // buckling.csv and the modes as a VTU series.
+#include <algorithm>
 #include <amfrac/parameters/input_error.h>
 #include <amfrac/postprocess/vtu_series.h>
 #include <amfrac/simulator/simulator.h>
@@ -9,6 +10,7 @@
 #include <array>
 #include <deal.II/base/mpi.h>
 #include <deal.II/numerics/data_out.h>
+#include <limits>
 #include <optional>
 #include <sstream>
 
@@ -24,6 +26,40 @@ namespace amfrac
         if (key == name)
           return value;
       return std::nullopt;
+    }
+
+
+
+    /* The entry that scales a mode to a shape (largest displacement 1,
+     * positive): the largest in magnitude, and among the entries within a
+     * relative 1e-6 of it the one whose support point comes first in
+     * (x, y, z, component) order. A symmetric or antisymmetric mode has two
+     * such entries of opposite sign, equal up to the eigensolver's
+     * round-off, which differs with the number of ranks: the position, not
+     * the round-off, must pick the sign. */
+    template <int dim>
+    double
+    shape_scale(const TrilinosWrappers::MPI::Vector &mode,
+                const TiedCopyDoFs<dim>             &dofs,
+                const MPI_Comm                       comm)
+    {
+      const double largest = mode.linfty_norm();
+      // Support point, component, then minus the value (coincident copies
+      // of a cracked node: the positive one).
+      std::vector<double> first(dim + 2, std::numeric_limits<double>::max());
+      for (const auto i : dofs.locally_owned_dofs())
+        if (std::abs(mode(i)) >= (1 - 1e-6) * largest)
+          {
+            std::vector<double> key(dim + 2);
+            for (unsigned int d = 0; d < dim; ++d)
+              key[d] = dofs.support_point(i)[d];
+            key[dim]     = dofs.component(i);
+            key[dim + 1] = -mode(i);
+            first        = std::min(first, key);
+          }
+      const auto all = Utilities::MPI::all_gather(comm, first);
+      const auto key = *std::min_element(all.begin(), all.end());
+      return key[dim + 1] > 0 ? -largest : largest;
     }
   } // namespace
 
@@ -430,14 +466,8 @@ namespace amfrac
     AffineConstraints<double> homogeneous;
     make_constraints(t, homogeneous, true);
     homogeneous.distribute(mode);
-    const double largest        = mode.linfty_norm();
-    double       signed_largest = 0;
-    for (const auto i : dof_layer.locally_owned_dofs())
-      if (std::abs(mode(i)) == largest)
-        signed_largest = mode(i);
-    signed_largest
-      = Utilities::MPI::max(signed_largest, comm) > 0 ? largest : -largest;
-    mode *= parameters.geometry.imperfection_amplitude / signed_largest;
+    mode *= parameters.geometry.imperfection_amplitude
+            / shape_scale(mode, dof_layer, comm);
     Vector everywhere(dof_layer.locally_owned_dofs(),
                       complete_index_set(dof_layer.n_dofs()),
                       comm);
@@ -556,9 +586,7 @@ namespace amfrac
       {
         homogeneous.distribute(modes[k]);
         // Largest displacement 1, positive: a shape, not an amplitude.
-        const double largest  = Utilities::MPI::max(modes[k].max(), comm);
-        const double smallest = Utilities::MPI::min(modes[k].min(), comm);
-        modes[k] /= largest >= -smallest ? largest : smallest;
+        modes[k] /= shape_scale(modes[k], dof_layer, comm);
         relevant = modes[k];
         dof_layer.expand(relevant, copies);
 
