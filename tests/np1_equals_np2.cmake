@@ -1,4 +1,5 @@
-# Run the scene PRM (with SOLVER, or with the file APPEND appended) on one and on two MPI ranks and
+# Run the scene PRM (with SOLVER, or with the file APPEND appended, then
+# APPEND_MORE if given) on one and on two MPI ranks and
 # compare the histories with numdiff (relative 1e-8; absolute ABSOLUTE,
 # default 1e-10, for round-off around zero); with FIELDS, check the field files too.
 file(REMOVE_RECURSE ${WORKDIR})
@@ -12,6 +13,11 @@ end
 ")
 elseif(APPEND)
   file(READ ${APPEND} extra)
+  # A second file after the first (APPEND_MORE).
+  if(APPEND_MORE)
+    file(READ ${APPEND_MORE} more)
+    string(APPEND extra "\n${more}")
+  endif()
   file(WRITE ${WORKDIR}/scene.prm "${scene}\n${extra}")
 else()
   file(WRITE ${WORKDIR}/scene.prm "${scene}")

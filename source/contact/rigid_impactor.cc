@@ -8,6 +8,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <tuple>
@@ -63,6 +64,12 @@ namespace amfrac
       });
       return order;
     }
+
+    /** friction_state() ends with this tag after the committed centre and
+     * the dissipation since its records carry the nodes' sides; the
+     * state of older checkpoints ends with the dissipation, which is never
+     * negative. */
+    constexpr double sides_tag = -2;
 
     template <int dim>
     std::array<double, dim>
@@ -172,6 +179,7 @@ namespace amfrac
                     node.position = dofs.support_point(indices[i]);
                   }
                 node.stiffness += penalty * area;
+                node.side += cell->center() - node.position;
               }
           }
     // A mesh change keeps the friction history of the nodes that stay
@@ -182,42 +190,17 @@ namespace amfrac
                                        std::vector<double>();
     nodes.clear();
     for (auto &[dof, node] : found)
-      nodes.push_back(node);
+      {
+        node.side /= node.side.norm();
+        nodes.push_back(node);
+      }
     set_up = true;
     if (friction_coefficient == 0)
       return;
-    refuse_shared_positions();
     history.assign(nodes.size(), History());
     trial_history = history;
     if (!kept.empty())
       restore_history(kept, false);
-  }
-
-
-
-  template <int dim>
-  void
-  RigidImpactor<dim>::refuse_shared_positions() const
-  {
-    // The friction history is keyed by position (the numbering depends on
-    // the partition): two copies of a node on an interface that crosses
-    // the face would share a key.
-    std::vector<double> positions;
-    for (const Node &node : nodes)
-      for (unsigned int c = 0; c < dim; ++c)
-        positions.push_back(node.position[c]);
-    positions = concatenate_over_ranks(positions, comm);
-    const std::vector<std::size_t> order
-      = order_by_position<dim>(positions, dim);
-    for (std::size_t k = 1; k < order.size(); ++k)
-      if (std::equal(positions.begin() + order[k - 1] * dim,
-                     positions.begin() + order[k - 1] * dim + dim,
-                     positions.begin() + order[k] * dim))
-        throw InputError("Impactor/Friction coefficient",
-                         "the impactor's face crosses a ply interface or "
-                         "crack (two copies of a node lie at one point); "
-                         "friction there is not supported yet: choose a "
-                         "face within one ply or set it to 0");
   }
 
 
@@ -620,14 +603,17 @@ namespace amfrac
   std::vector<double>
   RigidImpactor<dim>::friction_state() const
   {
-    // Per node: position, force, stick energy, contact flag, displacement.
-    constexpr unsigned int stride = 3 * dim + 2;
+    // Per node: position, side, force, stick energy, contact flag,
+    // displacement.
+    constexpr unsigned int stride = 4 * dim + 2;
     std::vector<double>    values;
     for (unsigned int i = 0; i < nodes.size(); ++i)
       {
         const History &h = history[i];
         for (unsigned int c = 0; c < dim; ++c)
           values.push_back(nodes[i].position[c]);
+        for (unsigned int c = 0; c < dim; ++c)
+          values.push_back(nodes[i].side[c]);
         for (unsigned int c = 0; c < dim; ++c)
           values.push_back(h.force[c]);
         values.push_back(h.stick_energy);
@@ -637,7 +623,7 @@ namespace amfrac
       }
     values = concatenate_over_ranks(values, comm);
     std::vector<double> sorted;
-    sorted.reserve(values.size() + dim + 1);
+    sorted.reserve(values.size() + dim + 2);
     for (const std::size_t k : order_by_position<dim>(values, stride))
       sorted.insert(sorted.end(),
                     values.begin() + k * stride,
@@ -645,6 +631,7 @@ namespace amfrac
     for (unsigned int c = 0; c < dim; ++c)
       sorted.push_back(committed_center[c]);
     sorted.push_back(dissipation);
+    sorted.push_back(sides_tag);
     return sorted;
   }
 
@@ -661,41 +648,110 @@ namespace amfrac
 
   template <int dim>
   void
+  RigidImpactor<dim>::inherit_friction_state(const std::vector<double> &values)
+  {
+    restore_history(values, false);
+  }
+
+
+
+  template <int dim>
+  std::vector<long>
+  RigidImpactor<dim>::heirs_of(const std::vector<double> &values,
+                               const std::size_t          n_saved,
+                               const unsigned int         stride,
+                               const bool                 with_sides) const
+  {
+    std::map<std::array<double, dim>, std::vector<std::size_t>> at_position;
+    for (std::size_t k = 0; k < n_saved; ++k)
+      {
+        std::array<double, dim> key;
+        std::copy_n(values.data() + k * stride, dim, key.begin());
+        at_position[key].push_back(k);
+      }
+    std::vector<long> source(nodes.size(), -1);
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      {
+        const auto there = at_position.find(key_of(nodes[i].position));
+        if (there == at_position.end())
+          continue;
+        double closest = -std::numeric_limits<double>::max();
+        for (const std::size_t k : there->second)
+          {
+            double alignment = 0;
+            for (unsigned int c = 0; with_sides && c < dim; ++c)
+              alignment += nodes[i].side[c] * values[k * stride + dim + c];
+            if (alignment > closest)
+              closest = alignment, source[i] = k;
+          }
+      }
+    return source;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  RigidImpactor<dim>::heirs_stiffness(const std::vector<long> &source,
+                                      const std::size_t        n_saved) const
+  {
+    std::vector<double> pairs;
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      if (source[i] >= 0)
+        {
+          pairs.push_back(source[i]);
+          pairs.push_back(nodes[i].stiffness);
+        }
+    pairs = concatenate_over_ranks(pairs, comm);
+    std::vector<std::pair<double, double>> sorted;
+    for (std::size_t k = 0; k + 1 < pairs.size(); k += 2)
+      sorted.emplace_back(pairs[k], pairs[k + 1]);
+    std::sort(sorted.begin(), sorted.end());
+    std::vector<double> total(n_saved, 0.);
+    for (const auto &[k, stiffness] : sorted)
+      total[static_cast<std::size_t>(k)] += stiffness;
+    return total;
+  }
+
+
+
+  template <int dim>
+  void
   RigidImpactor<dim>::restore_history(const std::vector<double> &values,
                                       const bool                 require_all)
   {
-    constexpr unsigned int stride = 3 * dim + 2;
-    AssertThrow(values.size() >= dim + 1
-                  && (values.size() - dim - 1) % stride == 0,
+    const bool with_sides     = !values.empty() && values.back() == sides_tag;
+    const unsigned int stride = with_sides ? 4 * dim + 2 : 3 * dim + 2;
+    const unsigned int tail   = with_sides ? dim + 2 : dim + 1;
+    AssertThrow(values.size() >= tail && (values.size() - tail) % stride == 0,
                 ExcMessage("the checkpoint's impactor friction state has "
                            + std::to_string(values.size()) + " values"));
-    const std::size_t n_saved = (values.size() - dim - 1) / stride;
-    std::map<std::array<double, dim>, History> saved;
-    for (std::size_t k = 0; k < n_saved; ++k)
-      {
-        const double           *v = values.data() + k * stride;
-        std::array<double, dim> key;
-        History                 h;
-        for (unsigned int c = 0; c < dim; ++c)
-          {
-            key[c]            = v[c];
-            h.force[c]        = v[dim + c];
-            h.displacement[c] = v[2 * dim + 2 + c];
-          }
-        h.stick_energy = v[2 * dim];
-        h.in_contact   = v[2 * dim + 1] > 0;
-        h.referenced   = true;
-        saved[key]     = h;
-      }
+    const std::size_t       n_saved = (values.size() - tail) / stride;
+    const std::vector<long> source
+      = heirs_of(values, n_saved, stride, with_sides);
+    const std::vector<double> shared = heirs_stiffness(source, n_saved);
+    // The history follows the position (and the side).
+    const unsigned int first = with_sides ? 2 * dim : dim;
     history.assign(nodes.size(), History());
     bool missing = false;
     for (unsigned int i = 0; i < nodes.size(); ++i)
       {
-        const auto h = saved.find(key_of(nodes[i].position));
-        if (h != saved.end())
-          history[i] = h->second;
-        else
-          missing = true;
+        if (source[i] < 0)
+          {
+            missing = true;
+            continue;
+          }
+        const double *v     = values.data() + source[i] * stride + first;
+        const double  share = nodes[i].stiffness / shared[source[i]];
+        History      &h     = history[i];
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            h.force[c]        = share * v[c];
+            h.displacement[c] = v[dim + 2 + c];
+          }
+        h.stick_energy = share * v[dim];
+        h.in_contact   = v[dim + 1] > 0;
+        h.referenced   = true;
       }
     // On every rank alike, so that no rank goes on alone.
     if (require_all && Utilities::MPI::max(missing ? 1 : 0, comm) > 0)
@@ -703,10 +759,10 @@ namespace amfrac
                        "the checkpoint's friction history of the impactor "
                        "has no entry for a node of this mesh's face");
     trial_history      = history;
-    const double *tail = values.data() + n_saved * stride;
+    const double *rest = values.data() + n_saved * stride;
     for (unsigned int c = 0; c < dim; ++c)
-      committed_center[c] = tail[c];
-    dissipation         = tail[dim];
+      committed_center[c] = rest[c];
+    dissipation         = rest[dim];
     pending_dissipation = 0;
   }
 

@@ -1882,13 +1882,6 @@ namespace amfrac
               "Process zone elements: in 3D they refine along the plies "
               "only); refine the contact zone with Geometry/Refinement "
               "region");
-      // The friction history is keyed by a node's position, which the
-      // copies of a split node share.
-      require(!cracks.active || impactor.friction == 0,
-              "Impactor/Friction coefficient",
-              "friction between the impactor and a laminate that cracks "
-              "(Crack insertion/Criterion) is not supported yet: set it to "
-              "0");
       require(time.mass_scaling_step == 0,
               face,
               "mass scaling (Time/Mass scaling time step) would change the "

@@ -79,15 +79,21 @@ namespace amfrac
       dof_layer, element_mass, may_crack, where, penalty, released);
     const double cracks = max_and_where(local, where, comm);
     // A copy on the impactor's face feels its spring besides the cracks'
-    // (Gershgorin's rows add; the sum of the two largest bounds them).
-    // The impactor's friction is refused with crack insertion, so its
-    // stick springs do not enter.
+    // (Gershgorin's rows add; the sum of the two largest bounds them): the
+    // normal spring k, or the stick spring k_t = factor k if it is stiffer
+    // (a node's contact matrix k n n^T + k_t (I - n n^T) has both as
+    // eigenvalues).
     const auto &sphere = parameters.impactor;
     if (!sphere.active)
       return cracks;
+    const double stiffest
+      = sphere.friction > 0 ? std::max(1., sphere.tangential_factor) : 1.;
     return cracks
-           + impactor_copy_frequency_squared(
-             dof_layer, element_mass, sphere.boundary_id, sphere.penalty, comm);
+           + impactor_copy_frequency_squared(dof_layer,
+                                             element_mass,
+                                             sphere.boundary_id,
+                                             stiffest * sphere.penalty,
+                                             comm);
   }
 
 

@@ -474,36 +474,6 @@ subsection Impactor
   set Friction coefficient = 0.3
   set Tangential penalty factor = 0
 end"
-# Friction is keyed by position: a face that crosses a cohesive interface
-# (two copies of its nodes) is refused when the run sets the sphere up.
-expect impactor_friction_interface "Impactor/Friction coefficient" "set Dimension = 2
-subsection Geometry
-  set Stacking sequence = [0/90]
-  set Ply thickness = 1
-  set Length = 4
-  set Elements along length = 4
-end
-subsection Cohesive interfaces
-  set Interfaces = 0
-end
-subsection Boundary conditions
-  subsection x+
-    set Type = displacement
-  end
-end
-subsection Impactor
-  set Face = x-
-  set Motion = prescribed
-  set Center = -6, 1, 0
-  set Velocity = 1, 0, 0
-  set Friction coefficient = 0.3
-end
-subsection Time
-  set End time = 0.01
-end
-subsection Output
-  set Directory = out
-end"
 expect impactor_prescribed_overlap "Impactor/Center" "$base
 $impactor
 $prescribed
@@ -567,17 +537,6 @@ subsection Cohesive interfaces
 end
 subsection Adaptivity
   set Refine every = 1
-end"
-# Crack insertion with a free or a prescribed impactor, not with the
-# impactor's friction.
-expect impactor_cracks_friction "Impactor/Friction coefficient" "$base
-$impactor
-$explicit
-subsection Impactor
-  set Friction coefficient = 0.3
-end
-subsection Crack insertion
-  set Criterion = hoffman
 end"
 expect impactor_center "Center" "$base
 $impactor

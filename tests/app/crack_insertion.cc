@@ -295,6 +295,50 @@ namespace
       }
     CHECK(faces == history.value(last, "crack_faces"));
   }
+  /** The bar in explicit dynamics under a falling blunt striker with
+   * friction (tests/app/explicit_cracked_bar_sphere.prm appended to
+   * tests/app/explicit_cracked_bar.prm): cracks reach the top face under
+   * the striker and split nodes it touches (more copies touch it than the
+   * top face has nodes); the energy of every insertion event is
+   * continuous (1e-6, with the contact energy and the stick springs'),
+   * the striker rubs (friction forces and dissipation), and the ledger
+   * balances to 1e-4 of the energy given (the striker's and the pull's). */
+  void
+  check_explicit_bar_sphere(const std::string &file,
+                            const std::string &explicit_prm,
+                            const std::string &sphere_prm)
+  {
+    const auto simulator = amfrac_test::run_scene<2>(
+      file, file_text(explicit_prm) + "\n" + file_text(sphere_prm));
+    const History    &history = simulator->history();
+    const std::size_t last    = history.n_rows() - 1;
+    CHECK(history.value(last, "fragments") == 2);
+    // 0.5 m/s and 4e-6 t: 0.5 N mm.
+    const double striker   = 0.5 * 4e-6 * 500 * 500;
+    double       most_work = 0, rubbing = 0, touching = 0;
+    for (std::size_t r = 0; r < history.n_rows(); ++r)
+      {
+        most_work = std::max(most_work, history.value(r, "external_work"));
+        rubbing   = std::max(rubbing, history.value(r, "friction_force_sum"));
+        touching  = std::max(touching, history.value(r, "contact_nodes"));
+        CHECK(std::abs(history.value(r, "balance_error"))
+              < 1e-4 * (striker + most_work));
+      }
+    std::cout << "up to " << touching << " copies touch, friction up to "
+              << rubbing << " N, dissipation "
+              << history.value(last, "impactor_friction_dissipation") << " N mm"
+              << std::endl;
+    // 9 nodes on the top face (8 elements along x).
+    CHECK(touching > 9);
+    CHECK(rubbing > 0);
+    CHECK(history.value(last, "impactor_friction_dissipation") > 0);
+    const History *events = simulator->crack_history();
+    CHECK(events != nullptr && events->n_rows() >= 2);
+    for (std::size_t r = 0; events && r < events->n_rows(); ++r)
+      CHECK(std::abs(events->value(r, "energy_after")
+                     - events->value(r, "energy_before"))
+            < 1e-6 * events->value(r, "energy_before"));
+  }
   /** prm/fragmenting_plate.prm, the stress test: more than 1000 faces
    * inserted, the fragments never fewer from one row to the next and at
    * least 5 at the end, energy continuous at every insertion event, the
@@ -469,6 +513,8 @@ main(int argc, char *argv[])
                              "=\nend\n");
   else if (case_name == "fragmentation")
     check_fragmentation(argv[2]);
+  else if (case_name == "explicit_sphere")
+    check_explicit_bar_sphere(argv[2], argv[3], argv[4]);
   else if (case_name == "explicit_2")
     check_explicit_bar<2>(argv[2], "", argv[3]);
   else if (case_name == "explicit_3")

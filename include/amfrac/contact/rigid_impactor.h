@@ -42,6 +42,17 @@ namespace amfrac
    * runs commit the history at every evaluation; static runs evaluate
    * trial states from the last commit() (the converged step).
    *
+   * The history of a node is keyed by its position and by its side (the
+   * direction from it to the centres of its face's cells): the numbering
+   * depends on the partition, and the copies of a node split by a crack
+   * share a position but lie on opposite sides. A mesh change or a crack
+   * insertion hands each new node the history of the old node at its
+   * position whose side is closest to its own; the heirs of one old node
+   * (the copies of a split node, whose areas add up to its area) share its
+   * tangential force and stick energy in proportion to their stiffness, so
+   * that the force on the sphere and the contact energy do not jump. A
+   * single heir (refinement keeps every vertex) takes them whole.
+   *
    * A guided sphere (the default) moves along the face's normal only: its
    * acceleration across it is held at zero (a drop-weight striker, and
    * what symmetry planes through its path require).
@@ -238,12 +249,21 @@ namespace amfrac
     void
     set_friction_state(const std::vector<double> &values);
 
+    /** Take over friction_state() of the impactor of the mesh before a
+     * crack insertion or a mesh change: the heirs of its nodes as in the
+     * class's description, new nodes start afresh. Collective. */
+    void
+    inherit_friction_state(const std::vector<double> &values);
+
   private:
     struct Node
     {
       std::array<types::global_dof_index, dim> dofs;
       Point<dim>                               position;
       double                                   stiffness;
+      /** Unit direction from the node into its face's cells (the mean of
+       * their centres): which copy of a split node it is. */
+      Tensor<1, dim> side;
     };
 
     /** What the friction of a node keeps from the last commit: its
@@ -270,10 +290,22 @@ namespace amfrac
     void
     restore_history(const std::vector<double> &values, const bool require_all);
 
-    /** Friction: throws if two face nodes (of any rank) share a position.
+    /** For each node, the index of the record among @p n_saved records
+     * (of @p stride values, led by position and side) of
+     * friction_state() whose history it takes: the one at its position
+     * with the closest side, or -1 if none is there. */
+    std::vector<long>
+    heirs_of(const std::vector<double> &values,
+             const std::size_t          n_saved,
+             const unsigned int         stride,
+             const bool                 with_sides) const;
+
+    /** The sum over the nodes of all ranks that take record k of their
+     * stiffness, per record (added in a partition-independent order).
      * Collective. */
-    void
-    refuse_shared_positions() const;
+    std::vector<double>
+    heirs_stiffness(const std::vector<long> &source,
+                    const std::size_t        n_saved) const;
 
     /** The stiffest spring of a node over k: the stick spring's factor
      * if friction makes it stiffer than the normal one. */
