@@ -607,6 +607,8 @@ namespace amfrac
     run.put("newton.external_work", newton->external_work);
     run.put("newton.remeshing_energy", newton->remeshing_energy);
     run.put_integer("newton.settling", newton->settling);
+    run.put("newton.insertion_energy", newton->insertion_energy);
+    run.put_integer("newton.insertion_settling", newton->insertion_settling);
     run.put("newton.converged_force", newton->converged_force);
     save_vector(part, "displacement", newton->converged_solution);
     save_vector(part, "previous_residual", newton->previous_residual);
@@ -688,7 +690,14 @@ namespace amfrac
       newton->external_work    = run.get_scalar("newton.external_work");
       newton->remeshing_energy = run.get_scalar("newton.remeshing_energy");
       newton->settling         = run.get_integer("newton.settling") != 0;
-      newton->converged_force  = run.get_scalar("newton.converged_force");
+      // Absent in checkpoints written before the term: none booked.
+      if (run.has("newton.insertion_energy"))
+        {
+          newton->insertion_energy = run.get_scalar("newton.insertion_energy");
+          newton->insertion_settling
+            = run.get_integer("newton.insertion_settling") != 0;
+        }
+      newton->converged_force = run.get_scalar("newton.converged_force");
       restore_vector("displacement", newton->converged_solution);
       restore_vector("previous_residual", newton->previous_residual);
       restore_vector("previous_load", newton->previous_load);

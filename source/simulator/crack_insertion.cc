@@ -613,8 +613,9 @@ namespace amfrac
       impactor->move_to(t_previous);
     assembler.assemble_load(loads, t_previous, newton->external_load);
     update_residual(newton->converged_solution, nullptr);
-    newton->previous_residual = newton->residual;
-    newton->previous_load     = newton->external_load;
+    newton->previous_residual  = newton->residual;
+    newton->previous_load      = newton->external_load;
+    newton->insertion_settling = true;
 
     std::ostringstream line;
     line << "  t=" << t << ": " << chosen.size()

@@ -17,6 +17,25 @@ namespace amfrac
 {
   namespace
   {
+    /** The locally owned dofs of all supports, each once: a dof that two
+     * conditions hold (the corner of the x- and y- faces) must count once
+     * in sums of reactions. */
+    template <int dim>
+    std::vector<types::global_dof_index>
+    owned_support_dofs(
+      const std::vector<std::vector<types::global_dof_index>> &supports,
+      const TiedCopyDoFs<dim>                                 &dofs)
+    {
+      std::vector<types::global_dof_index> held;
+      for (const auto &support : supports)
+        for (const auto i : support)
+          if (dofs.locally_owned_dofs().is_element(i))
+            held.push_back(i);
+      std::sort(held.begin(), held.end());
+      held.erase(std::unique(held.begin(), held.end()), held.end());
+      return held;
+    }
+
     /** Newton cycling between branches of the law (a local snap-back)
      * rather than converging: give up early and cut the step or switch to
      * dissipation control. Not while the contact set of debonded faces
@@ -79,6 +98,7 @@ namespace amfrac
     const NewtonState &old              = newton ? *newton : *fresh;
     const double       external_work    = old.external_work;
     const double       remeshing_energy = old.remeshing_energy;
+    const double       insertion_energy = old.insertion_energy;
     const double       plastic_work     = old.plastic_work;
     // A prescribed impactor's last converged force and centre start the
     // trapezoidal work of the step solved again after a crack insertion.
@@ -87,6 +107,7 @@ namespace amfrac
     newton                             = std::make_unique<NewtonState>();
     newton->external_work              = external_work;
     newton->remeshing_energy           = remeshing_energy;
+    newton->insertion_energy           = insertion_energy;
     newton->plastic_work               = plastic_work;
     newton->sphere_force               = sphere_force;
     newton->sphere_center              = sphere_center;
@@ -429,10 +450,8 @@ namespace amfrac
   Simulator<dim>::load_force(const Vector &residual) const
   {
     double force = 0;
-    for (const auto &support : supports)
-      for (const auto i : support)
-        if (dof_layer.locally_owned_dofs().is_element(i))
-          force += newton->load_pattern(i) * residual(i);
+    for (const auto i : owned_support_dofs(supports, dof_layer))
+      force += newton->load_pattern(i) * residual(i);
     return Utilities::MPI::sum(force, comm);
   }
 
@@ -915,20 +934,19 @@ namespace amfrac
     Vector delta = solution;
     delta -= n.converged_solution;
     double work = 0;
-    for (const auto &support : supports)
-      for (const auto i : support)
-        if (dof_layer.locally_owned_dofs().is_element(i))
-          work += 0.5 * (n.previous_residual(i) + n.residual(i)) * delta(i);
+    for (const auto i : owned_support_dofs(supports, dof_layer))
+      work += 0.5 * (n.previous_residual(i) + n.residual(i)) * delta(i);
     work = Utilities::MPI::sum(work, comm);
-    if (n.settling)
+    if (n.settling || n.insertion_settling)
       {
-        // A state moved to a new mesh is out of balance at its free dofs;
-        // the work of those forces while it settles belongs to the mesh
-        // change.
+        // A state moved to a new mesh or onto new cracks is out of balance
+        // at its free dofs; the work of those forces while it settles
+        // belongs to the mesh change or to the insertion.
         Vector residual_sum = n.previous_residual;
         residual_sum += n.residual;
-        n.remeshing_energy += 0.5 * (residual_sum * delta) - work;
-        n.settling = false;
+        const double settling_work = 0.5 * (residual_sum * delta) - work;
+        (n.settling ? n.remeshing_energy : n.insertion_energy) += settling_work;
+        n.settling = n.insertion_settling = false;
       }
     Vector load_sum = n.previous_load;
     load_sum += n.external_load;
@@ -959,9 +977,12 @@ namespace amfrac
     // Only scenes whose mesh changes during the history have the term.
     if (parameters.adaptivity.during_history())
       columns.emplace_back("remeshing_energy", n.remeshing_energy);
+    if (parameters.cracks.active)
+      columns.emplace_back("insertion_energy", n.insertion_energy);
     columns.emplace_back("balance_error",
-                         n.external_work + n.remeshing_energy - strain_energy
-                           - n.plastic_work - interface_work - contact_energy);
+                         n.external_work + n.remeshing_energy
+                           + n.insertion_energy - strain_energy - n.plastic_work
+                           - interface_work - contact_energy);
     n.previous_residual = n.residual;
     n.previous_load     = n.external_load;
     return columns;

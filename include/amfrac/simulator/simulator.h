@@ -316,6 +316,15 @@ namespace amfrac
        * remeshing_energy; other steps keep theirs in the balance error,
        * which then still shows the Newton tolerance). */
       bool settling = false;
+      /** Crack insertion: a new crack starts from the mean stress at each
+       * of its points, which does not balance the bulk's nodal forces on
+       * the split nodes where the stress varies (and the points of an
+       * older crack's tip keep their traction). The converged state on
+       * the cracked mesh is then out of balance at free dofs; the work of
+       * those forces while it settles in the re-solved step is booked
+       * here (with insertion_settling), as for a mesh change. */
+      double insertion_energy   = 0;
+      bool   insertion_settling = false;
       /** Dissipation control: the prescribed displacements at t = 1
        * (hanging nodes interpolated), K_T of it (unconstrained, then
        * condensed), a second Newton direction, and the force conjugate to
