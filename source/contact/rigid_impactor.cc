@@ -741,9 +741,11 @@ namespace amfrac
             missing = true;
             continue;
           }
-        const double *v     = values.data() + source[i] * stride + first;
-        const double  share = nodes[i].stiffness / shared[source[i]];
-        History      &h     = history[i];
+        const double *v = values.data() + source[i] * stride + first;
+        // A node without area (none on hexahedra) takes no force.
+        const double share
+          = shared[source[i]] > 0 ? nodes[i].stiffness / shared[source[i]] : 0.;
+        History &h = history[i];
         for (unsigned int c = 0; c < dim; ++c)
           {
             h.force[c]        = share * v[c];
@@ -753,11 +755,16 @@ namespace amfrac
         h.in_contact   = v[dim + 1] > 0;
         h.referenced   = true;
       }
+    // A record in contact that no node took (two copies closer to one
+    // record than to the other at their point) would lose its force.
+    for (std::size_t k = 0; require_all && k < n_saved; ++k)
+      if (shared[k] == 0 && values[k * stride + first + dim + 1] > 0)
+        missing = true;
     // On every rank alike, so that no rank goes on alone.
     if (require_all && Utilities::MPI::max(missing ? 1 : 0, comm) > 0)
       throw InputError("Impactor/Friction coefficient",
                        "the checkpoint's friction history of the impactor "
-                       "has no entry for a node of this mesh's face");
+                       "does not match this mesh's face node for node");
     trial_history      = history;
     const double *rest = values.data() + n_saved * stride;
     for (unsigned int c = 0; c < dim; ++c)

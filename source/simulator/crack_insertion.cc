@@ -624,11 +624,20 @@ namespace amfrac
          << interfaces->n_crack_faces() << " crack faces in all, "
          << dof_layer.n_dofs() << " unknowns";
     pcout << line.str() << std::endl;
-    log_crack_event({{"time", t},
-                     {"faces", chosen.size()},
-                     {"crack_faces", interfaces->n_crack_faces()},
-                     {"unknowns", dof_layer.n_dofs()},
-                     {"hoffman", chosen.front().hoffman}});
+    std::vector<std::pair<std::string, double>> event
+      = {{"time", t},
+         {"faces", chosen.size()},
+         {"crack_faces", interfaces->n_crack_faces()},
+         {"unknowns", dof_layer.n_dofs()},
+         {"hoffman", chosen.front().hoffman}};
+    // The regrouped impactor at the converged state: the same force as
+    // before the insertion (the copies of a split node share its contact
+    // and friction), up to round-off.
+    if (impactor)
+      event.emplace_back(
+        "impactor_force_jump",
+        (impactor->force_on_laminate() - newton->sphere_force).norm());
+    log_crack_event(event);
     result.inserted = chosen.size();
     return result;
   }

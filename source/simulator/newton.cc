@@ -99,7 +99,11 @@ namespace amfrac
     const double       external_work    = old.external_work;
     const double       remeshing_energy = old.remeshing_energy;
     const double       insertion_energy = old.insertion_energy;
-    const double       plastic_work     = old.plastic_work;
+    // A transferred state not yet settled (a mesh change, then a crack
+    // insertion before the next step's ledger): its out-of-balance work,
+    // and the insertion's with it, goes to remeshing_energy.
+    const bool   settling     = old.settling;
+    const double plastic_work = old.plastic_work;
     // A prescribed impactor's last converged force and centre start the
     // trapezoidal work of the step solved again after a crack insertion.
     const Tensor<1, dim> sphere_force  = old.sphere_force;
@@ -108,6 +112,7 @@ namespace amfrac
     newton->external_work              = external_work;
     newton->remeshing_energy           = remeshing_energy;
     newton->insertion_energy           = insertion_energy;
+    newton->settling                   = settling;
     newton->plastic_work               = plastic_work;
     newton->sphere_force               = sphere_force;
     newton->sphere_center              = sphere_center;
