@@ -35,9 +35,13 @@ if(NOT ABSOLUTE)
   set(ABSOLUTE 1e-10)
 endif()
 # Fail with COMPLAINT unless the CSV file NAME of the two runs agrees to
-# relative 1e-8.
+# relative 1e-8 (or the relative tolerance given as a third argument).
 function(compare_ranks name complaint)
-  execute_process(COMMAND ${NUMDIFF} -q -s " \t\n," -r 1e-8 -a ${ABSOLUTE}
+  set(relative 1e-8)
+  if(ARGC GREATER 2)
+    set(relative ${ARGV2})
+  endif()
+  execute_process(COMMAND ${NUMDIFF} -q -s " \t\n," -r ${relative} -a ${ABSOLUTE}
     ${WORKDIR}/np1/output/${name} ${WORKDIR}/np2/output/${name}
     RESULT_VARIABLE status)
   if(NOT status EQUAL 0)
@@ -45,9 +49,14 @@ function(compare_ranks name complaint)
   endif()
 endfunction()
 compare_ranks(history.csv "one and two ranks differ")
-# With crack insertion: the same insertion events.
+# With crack insertion: the same insertion events. Relative 1e-6: the
+# static rounds log the residual of the converged state on the split
+# copies before the tractions are balanced (residual_before) and the
+# largest correction, which cancel down from the forces and so carry the
+# two runs' round-off magnified (measured 7e-8 relative); a different
+# face or time differs in the leading digits.
 if(EXISTS ${WORKDIR}/np1/output/cracks.csv)
-  compare_ranks(cracks.csv "one and two ranks insert different cracks")
+  compare_ranks(cracks.csv "one and two ranks insert different cracks" 1e-6)
 endif()
 # With ADAPTIVITY (runs that adapt during a load history): the same mesh
 # changes (cycle runs log their wall time there, so they are not compared).

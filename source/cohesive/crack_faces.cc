@@ -1,10 +1,12 @@
 // Inserted intra-ply cracks in CohesiveInterfaces: the set of released
-// faces, the extrinsic law of their points and the rebuild of the interface
-// elements after the DoF layer released new faces.
+// faces, the extrinsic law of their points, the rebuild of the interface
+// elements after the DoF layer released new faces, and (static runs) the
+// tractions of a round's new points balanced to the split copies.
 #include <algorithm>
 #include <amfrac/base/face_within.h>
 #include <amfrac/cohesive/interface_assembler.h>
 #include <amfrac/parameters/input_error.h>
+#include <cmath>
 #include <deal.II/base/mpi.h>
 #include <functional>
 #include <iterator>
@@ -24,6 +26,30 @@ namespace amfrac
       for (unsigned int i = 1; i < dim; ++i)
         value += local[i] * local[i];
       return std::sqrt(value);
+    }
+
+
+
+    template <int dim>
+    double
+    squared_norm(const std::vector<Tensor<1, dim>> &v, const MPI_Comm comm)
+    {
+      double sum = 0;
+      for (const auto &t : v)
+        sum += t * t;
+      return Utilities::MPI::sum(sum, comm);
+    }
+
+    /** The owned entries of @p from (writable ghosts or not) into
+     * @p to, times @p mask. */
+    void
+    copy_masked(const TrilinosWrappers::MPI::Vector &from,
+                const TrilinosWrappers::MPI::Vector &mask,
+                TrilinosWrappers::MPI::Vector       &to)
+    {
+      for (const auto i : to.locally_owned_elements())
+        to(i) = from(i) * mask(i);
+      to.compress(VectorOperation::insert);
     }
   } // namespace
 
@@ -273,6 +299,9 @@ namespace amfrac
               failure = "a crack would start without traction";
           }
       }
+    std::vector<std::pair<unsigned int, unsigned int>> added_keys;
+    for (const Element &element : added)
+      added_keys.emplace_back(element.active_cell, element.face);
     // Both lists are in the order of the active cells, then faces.
     std::vector<Element> merged;
     merged.reserve(elements.size() + added.size());
@@ -285,7 +314,14 @@ namespace amfrac
                  return std::make_pair(a.active_cell, a.face)
                         < std::make_pair(b.active_cell, b.face);
                });
-    elements            = std::move(merged);
+    elements = std::move(merged);
+    fresh.clear();
+    for (unsigned int e = 0; e < elements.size(); ++e)
+      if (std::binary_search(added_keys.begin(),
+                             added_keys.end(),
+                             std::make_pair(elements[e].active_cell,
+                                            elements[e].face)))
+        fresh.push_back(e);
     const MPI_Comm comm = tria.get_communicator();
     if (Utilities::MPI::max(failure.empty() ? 0 : 1, comm) > 0)
       {
@@ -324,6 +360,168 @@ namespace amfrac
           result.emplace_back(CellId(id), part[i + 4]);
         }
     return result;
+  }
+
+
+
+  template <int dim>
+  void
+  CohesiveInterfaces<dim>::spread_fresh(
+    const std::vector<Tensor<1, dim>> &tractions,
+    Vector                            &force,
+    const bool                         absolute) const
+  {
+    force = 0;
+    dealii::Vector<double> r;
+    unsigned int           point = 0;
+    for (const unsigned int e : fresh)
+      {
+        const Element &element = elements[e];
+        r.reinit(element.dofs.size());
+        for (unsigned int q = 0; q < element.JxW.size(); ++q, ++point)
+          {
+            const Tensor<1, dim> t
+              = std::sqrt(element.JxW[q]) * tractions[point];
+            for (unsigned int k = 0; k < element.dofs.size(); ++k)
+              {
+                const double shape = element.shape(q, k);
+                r(k) += (absolute ? std::abs(shape) : shape)
+                        * t[element.component[k]];
+              }
+          }
+        force.add(element.dofs, r);
+      }
+    force.compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  void
+  CohesiveInterfaces<dim>::gather_fresh(
+    const Vector                &values,
+    std::vector<Tensor<1, dim>> &tractions) const
+  {
+    tractions.clear();
+    for (const unsigned int e : fresh)
+      {
+        const Element &element = elements[e];
+        for (unsigned int q = 0; q < element.JxW.size(); ++q)
+          {
+            Tensor<1, dim> t;
+            for (unsigned int k = 0; k < element.dofs.size(); ++k)
+              t[element.component[k]]
+                += element.shape(q, k) * values(element.dofs[k]);
+            tractions.push_back(std::sqrt(element.JxW[q]) * t);
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  typename CohesiveInterfaces<dim>::BalanceReport
+  CohesiveInterfaces<dim>::balance_new_cracks(const Vector   &residual,
+                                              const Vector   &free_rows,
+                                              const IndexSet &relevant,
+                                              Vector         &touched)
+  {
+    const MPI_Comm  comm  = residual.get_mpi_communicator();
+    const IndexSet &owned = residual.locally_owned_elements();
+    Vector          spread;
+    spread.reinit(owned, relevant, comm, true);
+    Vector ghosted(owned, relevant, comm);
+
+    // The free rows the new points act on (with |shape|, so that the two
+    // faces at a crack tip's node, which cancel, still count).
+    std::size_t n_points = 0;
+    for (const unsigned int e : fresh)
+      n_points += elements[e].JxW.size();
+    Tensor<1, dim> unit;
+    for (unsigned int d = 0; d < dim; ++d)
+      unit[d] = 1;
+    spread_fresh(std::vector<Tensor<1, dim>>(n_points, unit), spread, true);
+    for (const auto i : owned)
+      touched(i) = spread(i) > 0 && free_rows(i) > 0 ? 1 : 0;
+    touched.compress(VectorOperation::insert);
+
+    // CGLS for min |B z + P r| with B = P S (P: the free rows). From z = 0
+    // it converges to the least-norm z, i.e. the least sum of
+    // JxW |delta|^2 with delta = z / sqrt(JxW).
+    Vector rhs(owned, comm), Bp(owned, comm);
+    copy_masked(residual, free_rows, rhs);
+    rhs *= -1;
+    std::vector<Tensor<1, dim>> z(n_points), s, p;
+    const auto                  apply_transpose = [&]() {
+      ghosted = rhs;
+      gather_fresh(ghosted, s);
+    };
+    apply_transpose();
+    p                    = s;
+    double        gamma  = squared_norm(s, comm);
+    const double  gamma0 = gamma;
+    BalanceReport report;
+    while (gamma > 1e-28 * gamma0 && gamma > 0 && report.iterations < 200)
+      {
+        spread_fresh(p, spread);
+        copy_masked(spread, free_rows, Bp);
+        const double Bp2 = Bp * Bp;
+        if (!(Bp2 > 0))
+          break;
+        const double alpha = gamma / Bp2;
+        for (std::size_t i = 0; i < z.size(); ++i)
+          z[i] += alpha * p[i];
+        rhs.add(-alpha, Bp);
+        apply_transpose();
+        const double gamma_new = squared_norm(s, comm);
+        for (std::size_t i = 0; i < p.size(); ++i)
+          p[i] = s[i] + (gamma_new / gamma) * p[i];
+        gamma = gamma_new;
+        ++report.iterations;
+      }
+    apply_corrections(z, report);
+    report.limited = Utilities::MPI::sum(report.limited, comm);
+    report.largest_correction
+      = Utilities::MPI::max(report.largest_correction, comm);
+    return report;
+  }
+
+
+
+  template <int dim>
+  void
+  CohesiveInterfaces<dim>::apply_corrections(
+    const std::vector<Tensor<1, dim>> &z,
+    BalanceReport                     &report)
+  {
+    unsigned int point = 0;
+    for (const unsigned int e : fresh)
+      {
+        Element &element = elements[e];
+        for (unsigned int q = 0; q < element.JxW.size(); ++q, ++point)
+          {
+            PointState          &state = element.converged[q];
+            const Tensor<1, dim> change
+              = element.frame[q] * (z[point] / std::sqrt(element.JxW[q]));
+            const Tensor<1, dim> T = state.traction + change;
+            const double         strength
+              = std::max(state.strength, effective_traction<dim>(T));
+            // The bilinear law needs a penalty above strength^2 / (2 Gc):
+            // a point that would need more keeps the stress's traction.
+            if (!(crack_penalty > strength * strength / (2 * state.toughness)))
+              {
+                ++report.limited;
+                continue;
+              }
+            report.largest_correction
+              = std::max(report.largest_correction, change.norm());
+            state.traction   = T;
+            state.offset     = T / crack_penalty;
+            state.strength   = strength;
+            state.inserted   = 0.5 * T * state.offset;
+            element.trial[q] = state;
+          }
+      }
   }
 
 

@@ -353,6 +353,7 @@ namespace amfrac
   CohesiveInterfaces<dim>::make_elements(const TiedCopyDoFs<dim> &dofs)
   {
     unbuilt.clear();
+    fresh.clear();
     set_point_regions(dofs.get_fe().degree + 1);
     std::vector<std::pair<CellIterator, unsigned int>> faces;
     for (const auto &cell : dofs.copy_handler().active_cell_iterators())

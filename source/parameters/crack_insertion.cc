@@ -87,6 +87,18 @@ namespace amfrac
         "index 1 + this (before any insertion in the step) is cut back, "
         "down to Nonlinear solver/Minimum step fraction, so that cracks "
         "start at their strength and not at what a long step overshoots.");
+      prm.declare_entry(
+        "Balance inserted tractions",
+        "true",
+        Patterns::Bool(),
+        "Static runs: the traction a new crack starts from (the stress of "
+        "the two cells times the normal, point by point) is corrected by "
+        "the smallest change (least squares, weighted by area) that puts "
+        "the copies of the split nodes back in balance, so that the "
+        "insertion does no work (cracks.csv residual_before, "
+        "residual_after). false: start from the stress as it is and book "
+        "the work of the imbalance in insertion_energy. Explicit runs "
+        "start from the stress as it is.");
       prm.declare_entry("Rounds per step",
                         "100",
                         Patterns::Integer(1),
@@ -115,6 +127,7 @@ namespace amfrac
       faces_per_round        = prm.get_integer("Faces per round");
       rounds_per_step        = prm.get_integer("Rounds per step");
       onset_tolerance        = prm.get_double("Onset tolerance");
+      balance_tractions      = prm.get_bool("Balance inserted tractions");
       const std::string list = prm.get("Plies");
       prm.leave_subsection();
       plies.clear();

@@ -613,6 +613,7 @@ namespace amfrac
       impactor->move_to(t_previous);
     assembler.assemble_load(loads, t_previous, newton->external_load);
     update_residual(newton->converged_solution, nullptr);
+    const auto balance         = balance_inserted_tractions();
     newton->previous_residual  = newton->residual;
     newton->previous_load      = newton->external_load;
     newton->insertion_settling = true;
@@ -630,6 +631,7 @@ namespace amfrac
          {"crack_faces", interfaces->n_crack_faces()},
          {"unknowns", dof_layer.n_dofs()},
          {"hoffman", chosen.front().hoffman}};
+    event.insert(event.end(), balance.begin(), balance.end());
     // The regrouped impactor at the converged state: the same force as
     // before the insertion (the copies of a split node share its contact
     // and friction), up to round-off.
@@ -640,6 +642,39 @@ namespace amfrac
     log_crack_event(event);
     result.inserted = chosen.size();
     return result;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::pair<std::string, double>>
+  Simulator<dim>::balance_inserted_tractions()
+  {
+    if (!parameters.cracks.balance_tractions)
+      return {};
+    NewtonState &n     = *newton;
+    const auto  &owned = dof_layer.locally_owned_dofs();
+    Vector       free_rows(owned, comm), touched(owned, comm);
+    for (const auto i : owned)
+      free_rows(i) = n.increment_constraints.is_constrained(i) ? 0 : 1;
+    free_rows.compress(VectorOperation::insert);
+    const auto on_touched = [&]() {
+      Vector r = n.condensed_residual;
+      r.scale(touched);
+      return r.l2_norm();
+    };
+    const auto report
+      = interfaces->balance_new_cracks(n.condensed_residual,
+                                       free_rows,
+                                       dof_layer.locally_relevant_dofs(),
+                                       touched);
+    const double before = on_touched();
+    update_residual(n.converged_solution, nullptr);
+    return {{"residual_before", before},
+            {"residual_after", on_touched()},
+            {"largest_correction", report.largest_correction},
+            {"balance_iterations", report.iterations},
+            {"balance_limited", report.limited}};
   }
 
 

@@ -158,6 +158,37 @@ namespace amfrac
             const CrackTraction                               &traction,
             const std::function<double(const CellIterator &)> &toughness);
 
+    /** What balance_new_cracks() did (all ranks). */
+    struct BalanceReport
+    {
+      /** Least-squares iterations, and new points whose corrected
+       * traction would have needed a stiffer penalty (kept at T0). */
+      unsigned int  iterations = 0;
+      unsigned long limited    = 0;
+      /** The largest change of a point's traction [MPa]. */
+      double largest_correction = 0;
+    };
+
+    /**
+     * Static crack insertion, after rebuild() and an evaluation at the
+     * converged state: the points of the last rebuild() start from the
+     * stress of the two cells, which is not in balance with the nodal
+     * forces of the split copies (a Q1 stress is constant per cell, the
+     * nodal forces are not). Their tractions change by the smallest
+     * delta (least squares of sum_q JxW_q |delta_q|^2, by CGLS) for which
+     * their forces cancel @p residual (the condensed residual, owned
+     * entries) on the rows that @p free_rows marks 1 (free, not hanging)
+     * and that the new points touch; those rows are marked 1 in
+     * @p touched, the others 0. Offsets, onset tractions and inserted
+     * energies follow the new tractions (converged and trial states).
+     * @p relevant: the locally relevant dofs. Collective.
+     */
+    BalanceReport
+    balance_new_cracks(const Vector   &residual,
+                       const Vector   &free_rows,
+                       const IndexSet &relevant,
+                       Vector         &touched);
+
     /** The elements (lower cell and face) of all ranks whose points are
      * all debonded: the faces that separate fragments (collective). */
     std::vector<std::pair<CellId, unsigned int>>
@@ -496,12 +527,14 @@ namespace amfrac
      * (0: no crack insertion). */
     std::set<std::pair<CellId, unsigned int>>    cracked;
     std::vector<std::pair<CellId, unsigned int>> unbuilt;
-    double                                       crack_penalty  = 0;
-    double                                       crack_friction = 0;
-    const cohesive::SeedLawProperties            law;
-    const cohesive::CamanhoDavilaProperties      camanho_davila;
-    std::vector<Element>                         elements;
-    double                                       time_step = 1;
+    /** Positions in elements of those the last rebuild() built. */
+    std::vector<unsigned int>               fresh;
+    double                                  crack_penalty  = 0;
+    double                                  crack_friction = 0;
+    const cohesive::SeedLawProperties       law;
+    const cohesive::CamanhoDavilaProperties camanho_davila;
+    std::vector<Element>                    elements;
+    double                                  time_step = 1;
 
     /** Evaluate point @p q of @p element at @p global_gap (trial state,
      * local @p tangent); returns its traction in the global frame times
@@ -606,6 +639,27 @@ namespace amfrac
                  const unsigned int       face,
                  FEFaceValues<dim>       &lower,
                  FEFaceValues<dim>       &upper) const;
+
+    /** Static crack insertion (balance_new_cracks()): @p force (writable
+     * ghosts) = the forces of the fresh points' global tractions
+     * @p tractions times sqrt(JxW), compressed (with |shape| if
+     * @p absolute); and the adjoint, @p tractions = sqrt(JxW) times the
+     * gap of @p values (ghosted) at the fresh points. */
+    void
+    spread_fresh(const std::vector<Tensor<1, dim>> &tractions,
+                 Vector                            &force,
+                 const bool                         absolute = false) const;
+    void
+    gather_fresh(const Vector                &values,
+                 std::vector<Tensor<1, dim>> &tractions) const;
+
+    /** The fresh points' tractions changed by the global z / sqrt(JxW)
+     * (balance_new_cracks()), with their offsets, onsets and inserted
+     * energies; a point whose new onset the penalty cannot carry keeps
+     * its traction (counted in @p report). */
+    void
+    apply_corrections(const std::vector<Tensor<1, dim>> &z,
+                      BalanceReport                     &report);
 
     /** The extrinsic law of a crack point: Camanho-Davila with one
      * strength and one fracture energy in all modes (those of the point)

@@ -35,6 +35,9 @@ namespace amfrac
       /** A step whose most critical face exceeds Hoffman index 1 + this
        * before any insertion is cut back. */
       double onset_tolerance;
+      /** Static runs: correct the tractions a round's new crack points
+       * start from so that the split copies stay in balance. */
+      bool balance_tractions = true;
 
       static void
       declare_parameters(ParameterHandler &prm);

@@ -714,6 +714,13 @@ namespace amfrac
      * the new numbering). */
     typename CohesiveInterfaces<dim>::CrackReport
     rebuild_crack_elements(const Vector &converged, const Vector &onset);
+    /** Static runs, after an insertion round's residual at the converged
+     * state: the new points' tractions balanced to it (Crack
+     * insertion/Balance inserted tractions), the residual evaluated
+     * again; the columns of cracks.csv (residuals over the rows the new
+     * points act on, before and after). */
+    std::vector<std::pair<std::string, double>>
+    balance_inserted_tractions();
     /** Explicit runs: release @p chosen, rebuild the DoF layer and the
      * interface elements, and move the @p carried vectors (the
      * displacement first, owned entries) to the new numbering. */
