@@ -166,6 +166,11 @@ main(int argc, char *argv[])
   CHECK(median <= 6);
 
   // Mesh refinement: the peak with the crack-start region refined twice.
+  // Not with an appended control (app/dcb_2d_opening): the peak comes
+  // before the switch to it, so that run's refined peak is app/dcb_2d's
+  // (62.3947 N in both, measured).
+  if (argc == 5)
+    return amfrac_test::summary();
   Simulator<2> fine(scene(text.str(), data.fine_time, workdir + "/fine", 2),
                     MPI_COMM_WORLD);
   fine.run();

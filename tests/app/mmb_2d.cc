@@ -100,7 +100,7 @@ main(int argc, char *argv[])
       return 2;
     }
   Simulator<2> simulator(parameters::Parameters::from_string(
-                           amfrac_test::scene_until(argv[1], 7.0, 70, argv[2])),
+                           amfrac_test::scene_until(argv[1], 8.0, 80, argv[2])),
                          MPI_COMM_WORLD);
   simulator.run();
   const History    &hist = simulator.history();

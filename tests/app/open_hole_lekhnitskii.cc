@@ -11,8 +11,9 @@
 //   hierarchically, W/D = 4, 8, 16;
 // - prm/open_hole_lekhnitskii_prism.prm (argument "prism"): a thin 3D ply
 //   on P2 wedges with the hole mapped as a circle, globally remeshed by
-//   Gmsh from the ZZ size field (the seed's remeshing), W/D = 4, 8; every
-//   run must end below its target after at least one remeshing.
+//   Gmsh from the ZZ size field (the seed's remeshing), W/D = 4 (argument
+//   "prism_widths": 4 and 8, with the benchmarks); every run must end
+//   below its target after at least one remeshing.
 //
 // usage: app_open_hole_lekhnitskii open_hole_lekhnitskii_2d.prm
 //        app_open_hole_lekhnitskii open_hole_lekhnitskii_prism.prm prism
@@ -99,17 +100,22 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool prism = argc == 3 && std::string(argv[2]) == "prism";
+  // "prism": W/D = 4 (the default suite); "prism_widths": 4 and 8 (the
+  // benchmark label: the second plate costs about 20 s).
+  const std::string kind  = argc == 3 ? argv[2] : "";
+  const bool        prism = kind == "prism" || kind == "prism_widths";
   if (argc != 2 && !prism)
     {
       std::cerr << "usage: app_open_hole_lekhnitskii "
                    "open_hole_lekhnitskii_2d.prm\n"
                    "       app_open_hole_lekhnitskii "
-                   "open_hole_lekhnitskii_prism.prm prism\n";
+                   "open_hole_lekhnitskii_prism.prm prism|prism_widths\n";
       return 2;
     }
   if (prism)
-    check_convergence<3>(argv[1], {4., 8.});
+    check_convergence<3>(argv[1],
+                         kind == "prism" ? std::vector<double>{4.} :
+                                           std::vector<double>{4., 8.});
   else
     check_convergence<2>(argv[1], {4., 8., 16.});
   return amfrac_test::summary();
