@@ -1,4 +1,5 @@
-# Restart equivalence: run the scene PRM (with the file APPEND appended)
+# Restart equivalence: run the scene PRM (with the file APPEND appended,
+# then APPEND_MORE if given)
 # once to the end, and once stopped after step STOP (Checkpoint/Stop after
 # step, exit status 75) and resumed with `amfrac --resume`; the final
 # checkpoints (every field, every history, the ledger) must agree to
@@ -12,6 +13,11 @@ file(READ ${PRM} scene)
 if(APPEND)
   file(READ ${APPEND} extra)
   set(scene "${scene}\n${extra}")
+endif()
+# A second file after the first.
+if(APPEND_MORE)
+  file(READ ${APPEND_MORE} more)
+  set(scene "${scene}\n${more}")
 endif()
 if(NOT NP)
   set(NP 1)
