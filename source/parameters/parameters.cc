@@ -1828,11 +1828,6 @@ namespace amfrac
               "Adaptivity/Refinement cycles",
               "the contact surfaces are those of the initial mesh in a "
               "static run; set Refinement cycles = 0 with Contact/Enable");
-      require(!cracks.active,
-              "Crack insertion/Criterion",
-              "crack insertion has not been tested with contact between "
-              "the bodies in static runs; set Criterion = none, or Time/Time "
-              "integration = explicit");
     }
 
 

@@ -569,10 +569,6 @@ expect contact_static_cycles "Adaptivity/Refinement cycles" "$static_contact
 subsection Adaptivity
   set Refinement cycles = 2
 end"
-expect contact_static_cracks "Crack insertion/Criterion" "$static_contact
-subsection Crack insertion
-  set Criterion = hoffman
-end"
 expect contact_static_hanging "hanging nodes" "$static_contact
 subsection Geometry
   set Refinement region = x < 5

@@ -39,9 +39,12 @@
 //   as a single ply of the same mesh under q / 2 (1e-3), more than 3.5 times
 //   the bonded pair (beam theory: 4, less with shear and the Q1 mesh),
 //   the contact carries q L / 2 less what the clamp takes at the root
-//   (within 5 %), at most 4 Newton iterations per step, balance 1e-4.
+//   (within 5 %), at most 4 Newton iterations per step, balance 1e-4;
+// - stack_cracks: the stack with friction and crack insertion in the top
+//   ply (tests/app/contact_stack_cracks.prm), see stack_cracks().
 // usage: app_static_contact blocks|blocks_2d|shifted|friction|stick|stack
 //        SCENE.prm WORKDIR
+//        app_static_contact stack_cracks SCENE.prm APPENDED.prm WORKDIR
 #include "../check.h"
 #include "scene.h"
 
@@ -295,21 +298,80 @@ namespace
     CHECK(largest(h, "newton_iterations") <= 4);
     CHECK(relative_balance(h) < 1e-4);
   }
+
+  /** The stack with friction and crack insertion
+   * (tests/app/contact_stack_cracks.prm appended): the top ply cracks
+   * through its thickness at x = 0.5 and nowhere else (two faces, two
+   * points each), the second face splitting the node on the contact
+   * surface. The contact is rebuilt on the split copies, so that the
+   * balance holds to 1e-5 of the work at every step (measured 1.2e-6) and
+   * the insertions do no work (1e-7 of it; measured 1.3e-8); the faces
+   * penetrate by the penalty's share only (measured 2.8e-8 mm); and the
+   * cracked stack deflects as the intact one does while its crack holds
+   * (1e-2; measured 1.6e-3). */
+  void
+  stack_cracks(const std::string &scene,
+               const std::string &appended,
+               const std::string &workdir)
+  {
+    const std::string cracks = amfrac_test::file_text(appended);
+    const auto        simulator
+      = amfrac_test::run_scene<2>(scene,
+                                  cracks + output_to(workdir + "/cracks"));
+    const History    &h    = simulator->history();
+    const std::size_t last = h.n_rows() - 1;
+    CHECK(h.value(last, "crack_faces") == 2);
+    unsigned long at_root = 0, elsewhere = 0;
+    for (const auto &p : simulator->interface_points())
+      if (p.interface == InterfacePointRecord<2>::crack)
+        (std::abs(p.position[0] - 0.5) < 1e-9 && p.position[1] > 1 - 1e-9 ?
+           at_root :
+           elsewhere)
+          += 1;
+    CHECK(Utilities::MPI::sum(at_root, MPI_COMM_WORLD) == 4);
+    CHECK(Utilities::MPI::sum(elsewhere, MPI_COMM_WORLD) == 0);
+    double work = 0, deepest = 0, pressed = 1e300;
+    for (std::size_t r = 0; r <= last; ++r)
+      {
+        work    = std::max(work, std::abs(h.value(r, "external_work")));
+        deepest = std::max(deepest, h.value(r, "body_contact_penetration"));
+        pressed = std::min(pressed, h.value(r, "body_contact_normal_force"));
+      }
+    const double intact = tip(scene,
+                              cracks
+                                + "subsection Crack insertion\n"
+                                  "  set Criterion = none\nend\n"
+                                + output_to(workdir + "/intact"),
+                              "p0_uy");
+    const double top    = h.value(last, "p0_uy");
+    std::cout << "stack with cracks: tip " << top << " (intact " << intact
+              << "), balance " << relative_balance(h) << ", insertion energy "
+              << h.value(last, "insertion_energy") << " of " << work
+              << ", deepest penetration " << deepest << ", least contact force "
+              << pressed << std::endl;
+    CHECK(relative_balance(h) < 1e-5);
+    CHECK(std::abs(h.value(last, "insertion_energy")) < 1e-7 * work);
+    CHECK(pressed > 0);
+    // The pressure q / 2 over the penalty, with margin for the root.
+    CHECK(deepest < 10 * 0.005 / penalty);
+    CHECK_RELATIVE(top, intact, 1e-2);
+  }
 } // namespace
 
 int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  if (argc != 4)
+  if (argc != 4 && !(argc == 5 && std::string(argv[1]) == "stack_cracks"))
     {
       std::cerr << "usage: app_static_contact "
                    "blocks|blocks_2d|shifted|friction|stick|stack SCENE.prm "
-                   "WORKDIR"
+                   "WORKDIR\n       app_static_contact stack_cracks SCENE.prm "
+                   "APPENDED.prm WORKDIR"
                 << std::endl;
       return 2;
     }
-  const std::string which = argv[1], scene = argv[2], workdir = argv[3];
+  const std::string which = argv[1], scene = argv[2], workdir = argv[argc - 1];
   if (which == "blocks")
     blocks(scene, workdir);
   else if (which == "blocks_2d")
@@ -322,6 +384,8 @@ main(int argc, char **argv)
     stick(scene, workdir);
   else if (which == "stack")
     stack(scene, workdir);
+  else if (which == "stack_cracks")
+    stack_cracks(scene, argv[3], argv[4]);
   else
     {
       std::cerr << "unknown case " << which << std::endl;
