@@ -421,10 +421,12 @@ namespace amfrac
 
   template <int dim>
   typename CohesiveInterfaces<dim>::BalanceReport
-  CohesiveInterfaces<dim>::balance_new_cracks(const Vector   &residual,
-                                              const Vector   &free_rows,
-                                              const IndexSet &relevant,
-                                              Vector         &touched)
+  CohesiveInterfaces<dim>::balance_new_cracks(
+    const Vector                        &residual,
+    const Vector                        &free_rows,
+    const IndexSet                      &relevant,
+    const std::function<void(Vector &)> &condense,
+    Vector                              &touched)
   {
     const MPI_Comm  comm  = residual.get_mpi_communicator();
     const IndexSet &owned = residual.locally_owned_elements();
@@ -441,8 +443,13 @@ namespace amfrac
     for (unsigned int d = 0; d < dim; ++d)
       unit[d] = 1;
     spread_fresh(std::vector<Tensor<1, dim>>(n_points, unit), spread, true);
+    Vector reach(owned, comm);
     for (const auto i : owned)
-      touched(i) = spread(i) > 0 && free_rows(i) > 0 ? 1 : 0;
+      reach(i) = spread(i);
+    reach.compress(VectorOperation::insert);
+    condense(reach);
+    for (const auto i : owned)
+      touched(i) = reach(i) != 0 && free_rows(i) > 0 ? 1 : 0;
     touched.compress(VectorOperation::insert);
 
     // CGLS for min |B z + P r| with B = P S (P: the free rows). From z = 0
@@ -504,8 +511,13 @@ namespace amfrac
             const Tensor<1, dim> change
               = element.frame[q] * (z[point] / std::sqrt(element.JxW[q]));
             const Tensor<1, dim> T = state.traction + change;
-            const double         strength
-              = std::max(state.strength, effective_traction<dim>(T));
+            // A corrected traction above the onset raises it, with a
+            // margin of 1e-6: a point exactly on its onset surface would
+            // take the elastic or the softening branch by round-off (and
+            // one rank count against two would differ).
+            const double strength
+              = std::max(state.strength,
+                         (1 + 1e-6) * effective_traction<dim>(T));
             // The bilinear law needs a penalty above strength^2 / (2 Gc):
             // a point that would need more keeps the stress's traction.
             if (!(crack_penalty > strength * strength / (2 * state.toughness)))

@@ -663,10 +663,20 @@ namespace amfrac
       r.scale(touched);
       return r.l2_norm();
     };
+    // The residual's condensation (hanging rows to their masters,
+    // constrained rows cleared), for the rows the new points reach.
+    const auto condense_force = [&](Vector &force) {
+      if (n.hanging)
+        n.hanging->condense(force);
+      Vector condensed(force);
+      condense(force, condensed);
+      force = condensed;
+    };
     const auto report
       = interfaces->balance_new_cracks(n.condensed_residual,
                                        free_rows,
                                        dof_layer.locally_relevant_dofs(),
+                                       condense_force,
                                        touched);
     const double before = on_touched();
     update_residual(n.converged_solution, nullptr);

@@ -380,7 +380,7 @@ namespace
    * crack face, two least-squares iterations): balanced, the two events'
    * residuals on the new points' rows fall below 1e-9 of what they were
    * (measured 7.6 N to 1.1e-11 N, 1.1 N to 3e-14 N) and the insertions do
-   * no work (measured -7.7e-14 of 1.36 N mm); as the stress is, they book
+   * no work (measured -3.2e-13 of 1.36 N mm); as the stress is, they book
    * -4.1e-3 N mm. (Its ledger closes to 6.5e-4 N mm only, from the first
    * contact steps on, before any crack: a Q2 matter of the nose, not of
    * the insertion, so not checked here.) */

@@ -178,16 +178,23 @@ namespace amfrac
      * delta (least squares of sum_q JxW_q |delta_q|^2, by CGLS) for which
      * their forces cancel @p residual (the condensed residual, owned
      * entries) on the rows that @p free_rows marks 1 (free, not hanging)
-     * and that the new points touch; those rows are marked 1 in
-     * @p touched, the others 0. Offsets, onset tractions and inserted
-     * energies follow the new tractions (converged and trial states).
-     * @p relevant: the locally relevant dofs. Collective.
+     * and that the new points touch. The least squares act on those rows
+     * only: a force on a hanging row of a new face, which the residual
+     * hands to its masters, is not moved there (a crack face whose
+     * vertex hangs is balanced approximately). @p touched marks with 1
+     * the rows the new points act on after @p condense (the residual's
+     * condensation, applied to an owned vector), the masters of hanging
+     * rows included, so that what is left there is reported. Offsets,
+     * onset tractions and inserted energies follow the new tractions
+     * (converged and trial states). @p relevant: the locally relevant
+     * dofs. Collective.
      */
     BalanceReport
-    balance_new_cracks(const Vector   &residual,
-                       const Vector   &free_rows,
-                       const IndexSet &relevant,
-                       Vector         &touched);
+    balance_new_cracks(const Vector                        &residual,
+                       const Vector                        &free_rows,
+                       const IndexSet                      &relevant,
+                       const std::function<void(Vector &)> &condense,
+                       Vector                              &touched);
 
     /** The elements (lower cell and face) of all ranks whose points are
      * all debonded: the faces that separate fragments (collective). */
