@@ -66,6 +66,55 @@ namespace amfrac
 
 
   template <int dim>
+  template <typename Carried, typename Parent>
+  void
+  BodyContact<dim>::inherit_history(
+    std::map<std::pair<unsigned int, unsigned int>, Carried>      &old,
+    const std::map<std::pair<unsigned int, unsigned int>, Parent> &parent_of)
+  {
+    // The heirs of each old node: the node that kept its key, and the new
+    // ones (a crack insertion's copies) whose own first corner was one of
+    // its corners, at the same place.
+    std::map<std::pair<unsigned int, unsigned int>, std::vector<unsigned int>>
+      heirs;
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      {
+        if (old.count(nodes[i].key) > 0)
+          {
+            heirs[nodes[i].key].push_back(i);
+            continue;
+          }
+        const auto parent = parent_of.find(nodes[i].key);
+        if (parent != parent_of.end()
+            && parent->second.reference == nodes[i].reference
+            && old.count(parent->second.key) > 0)
+          heirs[parent->second.key].push_back(i);
+      }
+    // The copies share the stick force by their stiffness, so that the
+    // force on the place and the spring energy (|F|^2 / 2 k_t summed) stay.
+    for (const auto &[key, indices] : heirs)
+      {
+        const Carried &parent = old.at(key);
+        double         total  = 0;
+        for (const unsigned int i : indices)
+          total += nodes[i].stiffness;
+        for (const unsigned int i : indices)
+          {
+            const double share
+              = indices.size() == 1 ? 1. : nodes[i].stiffness / total;
+            history[i] = parent.history;
+            history[i].friction *= share;
+            history[i].stick_energy *= share;
+            previous[i] = parent.previous;
+            fresh[i]    = parent.fresh;
+          }
+        old.erase(key);
+      }
+  }
+
+
+
+  template <int dim>
   void
   BodyContact<dim>::setup(const TiedCopyDoFs<dim> &dofs,
                           const FaceFilter        &released,
@@ -81,6 +130,17 @@ namespace amfrac
     std::map<std::pair<unsigned int, unsigned int>, Carried> old;
     for (std::size_t i = 0; i < nodes.size(); ++i)
       old[nodes[i].key] = {history[i], previous[i], fresh[i]};
+    // The old node of each corner, with its place and stiffness: the
+    // parent of the copies a crack insertion split it into.
+    struct Parent
+    {
+      std::pair<unsigned int, unsigned int> key;
+      Point<dim>                            reference;
+    };
+    std::map<std::pair<unsigned int, unsigned int>, Parent> parent_of;
+    for (const Node &node : nodes)
+      for (const auto &corner : node.corners)
+        parent_of[corner] = {node.key, node.reference};
 
     const auto                          &fe = dofs.get_fe();
     std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
@@ -175,10 +235,12 @@ namespace amfrac
             if (component != 0)
               continue;
             const auto it = found.find(indices[i]);
-            if (it != found.end())
-              it->second.key
-                = std::min(it->second.key,
-                           std::make_pair(cell->active_cell_index(), base));
+            if (it == found.end())
+              continue;
+            const std::pair<unsigned int, unsigned int> corner(
+              cell->active_cell_index(), base);
+            it->second.key = std::min(it->second.key, corner);
+            it->second.corners.push_back(corner);
           }
       }
 
@@ -230,17 +292,7 @@ namespace amfrac
     previous.assign(nodes.size(), Tensor<1, dim>());
     positions.assign(nodes.size(), Point<dim>());
     fresh.assign(nodes.size(), true);
-    for (std::size_t i = 0; i < nodes.size(); ++i)
-      {
-        const auto it = old.find(nodes[i].key);
-        if (it != old.end())
-          {
-            history[i]  = it->second.history;
-            previous[i] = it->second.previous;
-            fresh[i]    = it->second.fresh;
-            old.erase(it);
-          }
-      }
+    inherit_history(old, parent_of);
     // The stick springs of nodes that are gone (split, or no longer on the
     // surface) release their energy: booked as dissipated, so that the
     // ledger stays closed.

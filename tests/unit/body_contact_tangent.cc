@@ -15,7 +15,8 @@
 // normal's turning with the closest point on faces warped by 1e-4) to
 // 2e-2 here. With friction (mu = 0.3, static: the history committed at the
 // pressed state), the upper block then slid by 1e-5 mm (every node sticks)
-// or 1e-3 mm (every node slips): 1e-8 too.
+// or 1e-3 mm (every node slips): 1e-8 too. check_split(): a crack
+// insertion splitting nodes in contact keeps their friction (see there).
 #include "../check.h"
 
 #include <amfrac/contact/body_contact.h>
@@ -41,46 +42,33 @@ namespace
     return force;
   }
 
-  /** |K d - FD| / |K d| at a penetration @p push. With @p slide >= 0:
-   * friction (mu = 0.3, static), the history committed at the pressed
-   * state, then the upper block moved along x by @p slide; @p slipping
-   * tells whether every node in contact slips (friction = mu N). */
+  /** Two unit blocks of 2 x .. x 2 cells (2D: 2 x 2) stacked along the
+   * last axis into @p tria. */
   template <int dim>
-  double
-  tangent_error(const double push,
-                const double slide    = -1,
-                bool        *slipping = nullptr)
+  void
+  stacked_blocks(Triangulation<dim> &tria)
   {
-    Triangulation<dim>        tria;
-    std::vector<unsigned int> cells(dim, 2);
-    cells[dim - 1] = 2;
-    Point<dim> top;
+    const std::vector<unsigned int> cells(dim, 2);
+    Point<dim>                      top;
     for (unsigned int d = 0; d < dim; ++d)
       top[d] = d == dim - 1 ? 2 : 1;
     GridGenerator::subdivided_hyper_rectangle(tria, cells, Point<dim>(), top);
-    TiedCopyDoFs<dim> dofs(tria, 1);
-    // The faces at the middle height are released: two bodies.
-    const auto released = [](const auto &cell, const unsigned int f) {
-      return !cell->at_boundary(f)
-             && std::abs(cell->face(f)->center()[dim - 1] - 1) < 1e-12;
-    };
-    dofs.distribute(released);
-    parameters::Contact p;
-    p.active            = true;
-    p.penalty           = 1e3;
-    p.friction          = slide >= 0 ? 0.3 : 0;
-    p.tangential_factor = 1;
-    BodyContact<dim> contact(p, MPI_COMM_WORLD);
-    if (slide >= 0)
-      contact.set_static();
-    contact.setup(dofs, released, {});
+  }
 
-    const IndexSet &owned = dofs.locally_owned_dofs();
-    TrilinosVector  u(owned, MPI_COMM_WORLD), d(owned, MPI_COMM_WORLD);
-    std::mt19937    random(7);
-    std::uniform_real_distribution<double> small(-1e-4, 1e-4), unit(-1, 1);
-    // The upper block moves down into the lower one and sideways by 1 %
-    // of a cell (the nodes leave the other block's vertices).
+  /** The faces at the middle height: released, they make two bodies. */
+  template <int dim, typename Cell>
+  bool
+  at_middle(const Cell &cell, const unsigned int f)
+  {
+    return !cell->at_boundary(f)
+           && std::abs(cell->face(f)->center()[dim - 1] - 1) < 1e-12;
+  }
+
+  /** Which dofs belong to the upper block. */
+  template <int dim>
+  std::vector<bool>
+  upper_dofs(const TiedCopyDoFs<dim> &dofs)
+  {
     std::vector<bool>                    upper(dofs.n_dofs(), false);
     std::vector<types::global_dof_index> indices(
       dofs.get_fe().n_dofs_per_cell());
@@ -91,6 +79,51 @@ namespace
           for (const auto i : indices)
             upper[i] = true;
         }
+    return upper;
+  }
+
+  /** Contact parameters: penalty 1e3, Coulomb @p mu. */
+  parameters::Contact
+  contact_parameters(const double mu)
+  {
+    parameters::Contact p;
+    p.active            = true;
+    p.penalty           = 1e3;
+    p.friction          = mu;
+    p.tangential_factor = 1;
+    return p;
+  }
+
+  /** |K d - FD| / |K d| at a penetration @p push. With @p slide >= 0:
+   * friction (mu = 0.3, static), the history committed at the pressed
+   * state, then the upper block moved along x by @p slide; @p slipping
+   * tells whether every node in contact slips (friction = mu N). */
+  template <int dim>
+  double
+  tangent_error(const double push,
+                const double slide    = -1,
+                bool        *slipping = nullptr)
+  {
+    Triangulation<dim> tria;
+    stacked_blocks(tria);
+    TiedCopyDoFs<dim> dofs(tria, 1);
+    const auto        released = [](const auto &cell, const unsigned int f) {
+      return at_middle<dim>(cell, f);
+    };
+    dofs.distribute(released);
+    BodyContact<dim> contact(contact_parameters(slide >= 0 ? 0.3 : 0),
+                             MPI_COMM_WORLD);
+    if (slide >= 0)
+      contact.set_static();
+    contact.setup(dofs, released, {});
+
+    const IndexSet &owned = dofs.locally_owned_dofs();
+    TrilinosVector  u(owned, MPI_COMM_WORLD), d(owned, MPI_COMM_WORLD);
+    std::mt19937    random(7);
+    std::uniform_real_distribution<double> small(-1e-4, 1e-4), unit(-1, 1);
+    // The upper block moves down into the lower one and sideways by 1 %
+    // of a cell (the nodes leave the other block's vertices).
+    const std::vector<bool> upper = upper_dofs(dofs);
     for (const auto i : owned)
       {
         const unsigned int component = dofs.component(i);
@@ -184,6 +217,83 @@ namespace
     CHECK(stick < 1e-8);
     CHECK(slip < 1e-8);
   }
+
+  /** A crack insertion splits nodes of the pressed, sticking upper block
+   * (the face x = 0.5 through it is released): setup() on the new
+   * numbering hands each split node's stick force to its copies by their
+   * stiffness, so that at the same displacement the friction force on the
+   * block, the contact energy (with the stick springs') and the friction
+   * dissipation stay (1e-12). A copy that took the whole force with half
+   * the stiffness would double its spring's energy and book the excess as
+   * negative dissipation. */
+  template <int dim>
+  void
+  check_split()
+  {
+    Triangulation<dim> tria;
+    stacked_blocks(tria);
+    TiedCopyDoFs<dim> dofs(tria, 1);
+    const auto        middle = [](const auto &cell, const unsigned int f) {
+      return at_middle<dim>(cell, f);
+    };
+    const auto cracked = [&](const auto &cell, const unsigned int f) {
+      const auto x = cell->face(f)->center();
+      return middle(cell, f)
+             || (!cell->at_boundary(f) && std::abs(x[0] - 0.5) < 1e-12
+                 && x[dim - 1] > 1);
+    };
+    dofs.distribute(middle);
+    BodyContact<dim> contact(contact_parameters(0.3), MPI_COMM_WORLD);
+    contact.set_static();
+    contact.setup(dofs, middle, {});
+
+    // Pressed by 3e-4 and slid by 1e-5 along x: every node sticks.
+    const auto at = [&](const double push, const double slide) {
+      TrilinosVector          u(dofs.locally_owned_dofs(), MPI_COMM_WORLD);
+      const std::vector<bool> upper = upper_dofs(dofs);
+      for (const auto i : dofs.locally_owned_dofs())
+        if (upper[i])
+          u(i) = dofs.component(i) == dim - 1 ? -push :
+                 dofs.component(i) == 0       ? slide :
+                                                0.;
+      u.compress(VectorOperation::insert);
+      return u;
+    };
+    TrilinosVector force(at(0, 0));
+    contact.evaluate(at(3e-4, 0), force);
+    contact.commit();
+    const TrilinosVector u = at(3e-4, 1e-5);
+    contact.evaluate(u, force);
+    contact.commit();
+    const auto   before   = contact.columns();
+    const double energy   = contact.contact_energy();
+    const double friction = contact.friction_dissipation();
+
+    // The crack: the same displacement on the new numbering.
+    dealii::Vector<double> copies;
+    dofs.expand_all(dofs.replicate(u), copies);
+    dofs.distribute(cracked);
+    TrilinosVector split(dofs.locally_owned_dofs(), MPI_COMM_WORLD);
+    dofs.gather(copies, split);
+    contact.setup(dofs, cracked, {});
+    TrilinosVector after_force(split);
+    contact.evaluate(split, after_force);
+    contact.commit();
+    const auto after = contact.columns();
+    std::cout << dim << "D split: " << before[0].second << " -> "
+              << after[0].second << " nodes in contact, friction force "
+              << before[2].second << " -> " << after[2].second
+              << ", contact energy " << energy << " -> "
+              << contact.contact_energy() << ", friction dissipation "
+              << friction << " -> " << contact.friction_dissipation()
+              << std::endl;
+    CHECK(after[0].second > before[0].second);
+    CHECK(before[2].second > 0 && before[2].second < 0.3 * before[1].second);
+    CHECK(std::abs(after[2].second - before[2].second)
+          < 1e-12 * before[2].second);
+    CHECK(std::abs(contact.contact_energy() - energy) < 1e-12 * energy);
+    CHECK(std::abs(contact.friction_dissipation() - friction) < 1e-12 * energy);
+  }
 } // namespace
 
 int
@@ -192,5 +302,7 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   check_tangent<2>();
   check_tangent<3>();
+  check_split<2>();
+  check_split<3>();
   return amfrac_test::summary();
 }

@@ -10,6 +10,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -228,7 +229,22 @@ namespace amfrac
       /** (active cell index, vertex) of its first copy: partition- and
        * numbering-independent. */
       std::pair<unsigned int, unsigned int> key;
+      /** Every (active cell index, vertex) at the node: after a crack
+       * insertion splits it, the next setup() finds the copies' parent by
+       * their own keys among these. */
+      std::vector<std::pair<unsigned int, unsigned int>> corners;
     };
+
+    /** setup(): the friction history of the old nodes (@p old, by key)
+     * to the new ones: a node that kept its key takes its own; the copies
+     * of a split node (found through @p parent_of, the old node of each
+     * corner) share their parent's by their stiffness. The old nodes
+     * taken are removed from @p old. */
+    template <typename Carried, typename Parent>
+    void
+    inherit_history(
+      std::map<std::pair<unsigned int, unsigned int>, Carried>      &old,
+      const std::map<std::pair<unsigned int, unsigned int>, Parent> &parent_of);
 
     struct Face
     {
