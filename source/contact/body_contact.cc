@@ -130,7 +130,7 @@ namespace amfrac
     std::map<std::pair<unsigned int, unsigned int>, Carried> old;
     for (std::size_t i = 0; i < nodes.size(); ++i)
       old[nodes[i].key] = {history[i], previous[i], fresh[i]};
-    // The old node of each corner, with its place and stiffness: the
+    // The old node of each corner, with its place: the
     // parent of the copies a crack insertion split it into.
     struct Parent
     {
