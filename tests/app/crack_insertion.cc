@@ -303,6 +303,27 @@ namespace
       }
     CHECK(faces == history.value(last, "crack_faces"));
   }
+  /** Appended to a scene: Crack insertion/Balance inserted tractions. */
+  std::string
+  balance_switch(const bool balanced)
+  {
+    return std::string("\nsubsection Crack insertion\n set Balance inserted "
+                       "tractions = ")
+           + (balanced ? "true" : "false") + "\nend\n";
+  }
+
+  /** Insertion event @p r of @p events: the residual on the new points'
+   * rows after the balance is below 1e-9 of what it was before. */
+  void
+  check_balanced_event(const History &events, const std::size_t r)
+  {
+    const double before = events.value(r, "residual_before");
+    const double after  = events.value(r, "residual_after");
+    std::cout << "  residual on the new points' rows " << before
+              << " N, balanced " << after << " N" << std::endl;
+    CHECK(after < 1e-9 * before);
+  }
+
   /** The bar under a loading nose with friction
    * (tests/app/cracked_bar_nose.prm appended), statically: the section
    * x = 2 cracks (its two faces, nowhere else) and the node under the nose
@@ -320,10 +341,8 @@ namespace
                  const std::string &nose_prm,
                  const bool         balanced)
   {
-    const std::string switched  = "\nsubsection Crack insertion\n set Balance "
-                                  "inserted tractions = false\nend\n";
-    const auto        simulator = amfrac_test::run_scene<2>(
-      file, "\n" + file_text(nose_prm) + (balanced ? "" : switched));
+    const auto simulator = amfrac_test::run_scene<2>(
+      file, "\n" + file_text(nose_prm) + balance_switch(balanced));
     const History    &history          = simulator->history();
     const std::size_t last             = history.n_rows() - 1;
     const auto [on_section, elsewhere] = crack_points_at_section(*simulator);
@@ -360,19 +379,14 @@ namespace
       {
         std::cout << "insertion at t = " << events->value(r, "time")
                   << ": the nose's force changes by "
-                  << events->value(r, "impactor_force_jump") << " N";
+                  << events->value(r, "impactor_force_jump") << " N"
+                  << std::endl;
         CHECK(events->value(r, "impactor_force_jump") < 1e-10 * rubbing);
         if (balanced)
           {
-            // The split copies' residual, before and after the balance.
-            const double before = events->value(r, "residual_before");
-            const double after  = events->value(r, "residual_after");
-            std::cout << "; residual on the new points' rows " << before
-                      << " N, balanced " << after << " N";
-            CHECK(before > 1);
-            CHECK(after < 1e-9 * before);
+            CHECK(events->value(r, "residual_before") > 1);
+            check_balanced_event(*events, r);
           }
-        std::cout << std::endl;
       }
     return events && events->n_rows() == 2 ? events->value(1, "time") : 0;
   }
@@ -393,9 +407,8 @@ namespace
           file,
           "\n" + file_text(nose_prm)
             + "\nsubsection Discretization\n set Finite element degree = "
-              "2\nend\nsubsection Crack insertion\n set Balance inserted "
-              "tractions = "
-            + (balanced ? "true" : "false") + "\nend\n");
+              "2\nend\n"
+            + balance_switch(balanced));
         const History    &history = simulator->history();
         const std::size_t last    = history.n_rows() - 1;
         const double      booked  = history.value(last, "insertion_energy");
@@ -412,13 +425,7 @@ namespace
           }
         CHECK(std::abs(booked) < 1e-9 * work);
         for (std::size_t r = 0; events && r < events->n_rows(); ++r)
-          {
-            std::cout << "  residual " << events->value(r, "residual_before")
-                      << " N, balanced " << events->value(r, "residual_after")
-                      << " N" << std::endl;
-            CHECK(events->value(r, "residual_after")
-                  < 1e-9 * events->value(r, "residual_before"));
-          }
+          check_balanced_event(*events, r);
       }
   }
   /** The bar in explicit dynamics under a falling blunt striker with
