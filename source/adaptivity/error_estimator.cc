@@ -202,14 +202,26 @@ namespace amfrac
     // The patches a rank needs: those of every vertex of a cell that
     // shares a vertex with an owned cell, so that each node of an owned
     // cell sees all its patches, summed in vertex order (the same on every
-    // rank).
+    // rank). A hanging vertex of an owned cell takes its value from the
+    // vertices of the coarse cell it hangs on: their nodes need all their
+    // patches too (without them the hanging values, and the estimate,
+    // depended on the partition).
     std::vector<bool> needed(triangulation.n_vertices(), false);
+    const auto        mark_patches_of = [&](const auto &cell) {
+      for (const unsigned int v : cell->vertex_indices())
+        for (const auto &neighbor : cells_at[cell->vertex_index(v)])
+          for (const unsigned int w : neighbor->vertex_indices())
+            needed[neighbor->vertex_index(w)] = true;
+    };
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
-        for (const unsigned int v : cell->vertex_indices())
-          for (const auto &neighbor : cells_at[cell->vertex_index(v)])
-            for (const unsigned int w : neighbor->vertex_indices())
-              needed[neighbor->vertex_index(w)] = true;
+        {
+          mark_patches_of(cell);
+          for (const unsigned int v : cell->vertex_indices())
+            for (const auto &neighbor : cells_at[cell->vertex_index(v)])
+              if (neighbor->level() < cell->level())
+                mark_patches_of(neighbor);
+        }
 
     // Sums of the fits at the nodes: [0, n_stress) values and n_stress the
     // count, from fits of full rank; then the same from rank-deficient

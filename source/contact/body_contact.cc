@@ -115,11 +115,129 @@ namespace amfrac
 
 
   template <int dim>
+  Tensor<1, dim>
+  BodyContact<dim>::stretch_of(const History &h)
+  {
+    if (!h.in_contact || h.carried)
+      return h.in_contact ? h.friction : Tensor<1, dim>();
+    // stick_energy = |F|^2 / (2 k_t), so F / k_t = 2 stick_energy F / |F|^2.
+    const double squared = h.friction.norm_square();
+    return squared > 0 ? (2 * h.stick_energy / squared) * h.friction :
+                         Tensor<1, dim>();
+  }
+
+
+
+  template <int dim>
+  void
+  BodyContact<dim>::carry_by_place(const std::vector<Node>    &old_nodes,
+                                   const std::vector<Face>    &old_faces,
+                                   const std::vector<History> &old_history)
+  {
+    // The places the old surface knows a stretch at: its nodes, and the
+    // midpoints of its faces' edges and its faces' centres (the vertices
+    // one refinement adds), each with its side (outward normal) and
+    // whether some node there was in contact.
+    struct Place
+    {
+      Point<dim>     x;
+      Tensor<1, dim> side, stretch;
+      bool           in_contact;
+      /** An old node's own place (beats a mean at the same point). */
+      bool node;
+    };
+    std::vector<Place> places;
+    const auto         unit = [](const Tensor<1, dim> &v) {
+      const double norm = v.norm();
+      return norm > 0 ? v / norm : v;
+    };
+    const auto add_mean = [&](const std::vector<unsigned int> &members,
+                              const Tensor<1, dim>            &side) {
+      Place place{Point<dim>(), side, Tensor<1, dim>(), false, false};
+      for (const unsigned int i : members)
+        {
+          place.x += old_nodes[i].reference / double(members.size());
+          place.stretch += stretch_of(old_history[i]) / double(members.size());
+          place.in_contact = place.in_contact || old_history[i].in_contact;
+        }
+      places.push_back(place);
+    };
+    for (unsigned int i = 0; i < old_nodes.size(); ++i)
+      places.push_back({old_nodes[i].reference,
+                        unit(old_nodes[i].area_penalty),
+                        stretch_of(old_history[i]),
+                        old_history[i].in_contact,
+                        true});
+    for (const Face &face : old_faces)
+      {
+        std::array<Point<dim>, n_face_vertices> vertices;
+        for (unsigned int v = 0; v < n_face_vertices; ++v)
+          vertices[v] = old_nodes[face.nodes[v]].reference;
+        const Tensor<1, dim> side = face.sign * normal(vertices, face_middle());
+        add_mean({face.nodes.begin(), face.nodes.end()}, side);
+        if (dim == 3)
+          // The edges of a quadrilateral face: vertices 0-1, 2-3, 0-2, 1-3
+          // in deal.II's numbering.
+          for (const auto &[a, b] :
+               {std::pair<unsigned int, unsigned int>{0, 1},
+                {2, 3},
+                {0, 2},
+                {1, 3}})
+            add_mean({face.nodes[a], face.nodes[b]}, side);
+      }
+    const auto closer
+      = [](const Place &a, const Place &b, const Tensor<1, dim> &side) {
+          const double da = a.side * side, db = b.side * side;
+          return da > db + 1e-12 || (da > db - 1e-12 && a.node && !b.node);
+        };
+    std::sort(places.begin(), places.end(), [](const Place &a, const Place &b) {
+      return a.x[0] < b.x[0];
+    });
+    // Each new node: the places within round-off of it, the closest side,
+    // an old node before a mean.
+    double size = 0;
+    for (const Face &face : faces)
+      size = std::max(size, face.depth);
+    const double tolerance = 1e-9 * std::max(size, 1e-300);
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      {
+        const Point<dim> &x    = nodes[i].reference;
+        const auto        side = unit(nodes[i].area_penalty);
+        auto              it   = std::lower_bound(places.begin(),
+                                   places.end(),
+                                   x[0] - tolerance,
+                                   [](const Place &p, const double value) {
+                                     return p.x[0] < value;
+                                   });
+        const Place      *best = nullptr;
+        for (; it != places.end() && it->x[0] <= x[0] + tolerance; ++it)
+          if (it->x.distance(x) <= tolerance
+              && (best == nullptr || closer(*it, *best, side)))
+            best = &*it;
+        if (best == nullptr || !best->in_contact)
+          continue;
+        history[i].in_contact = true;
+        history[i].carried    = true;
+        history[i].friction   = best->stretch;
+      }
+  }
+
+
+
+  template <int dim>
   void
   BodyContact<dim>::setup(const TiedCopyDoFs<dim> &dofs,
                           const FaceFilter        &released,
-                          const FaceFilter        &paired)
+                          const FaceFilter        &paired,
+                          const bool               mesh_change)
   {
+    // A mesh change carries the history by place (carry_by_place()).
+    const std::vector<Node> old_nodes
+      = mesh_change ? nodes : std::vector<Node>();
+    const std::vector<Face> old_faces
+      = mesh_change ? faces : std::vector<Face>();
+    const std::vector<History> old_history
+      = mesh_change ? history : std::vector<History>();
     // The old history by node key, for the nodes of the new surface.
     struct Carried
     {
@@ -292,12 +410,17 @@ namespace amfrac
     previous.assign(nodes.size(), Tensor<1, dim>());
     positions.assign(nodes.size(), Point<dim>());
     fresh.assign(nodes.size(), true);
-    inherit_history(old, parent_of);
-    // The stick springs of nodes that are gone (split, or no longer on the
-    // surface) release their energy: booked as dissipated, so that the
-    // ledger stays closed.
-    for (const auto &[key, entry] : old)
-      dissipation += entry.history.stick_energy;
+    if (mesh_change)
+      carry_by_place(old_nodes, old_faces, old_history);
+    else
+      {
+        inherit_history(old, parent_of);
+        // The stick springs of nodes that are gone (split, or no longer on
+        // the surface) release their energy: booked as dissipated, so that
+        // the ledger stays closed.
+        for (const auto &[key, entry] : old)
+          dissipation += entry.history.stick_energy;
+      }
 
     // What each rank sends, and the gathered order.
     const IndexSet &owned = dofs.locally_owned_dofs();
@@ -750,8 +873,10 @@ namespace amfrac
             const double         gap = offset(s, face, xi) * n;
             // Gaps of round-off (faces brought back to where they
             // touched) are not contact: their count would depend on the
-            // order of sums, i.e. on the partition.
-            if (!(gap < -1e-13 * face.depth && gap > -face.depth)
+            // order of sums, i.e. on the partition. The reach stops short
+            // of the depth: a node that hangs at the midpoint of an edge
+            // of the face's own cell lies exactly half that edge behind it.
+            if (!(gap < -1e-13 * face.depth && gap > -0.9 * face.depth)
                 || !(nodes[s].area_penalty * n < 0))
               continue;
             // A face the node projects into beats one whose edge it has
@@ -806,10 +931,20 @@ namespace amfrac
                 -= N[a]
                    * (displacements[face.nodes[a]] - previous[face.nodes[a]]);
             slip -= (slip * pair.n) * pair.n;
+            const double kt = tangential_factor * k;
+            // A mesh change carried the spring's stretch: its force is
+            // that of the node's new stiffness, and its energy is where
+            // the dissipation starts from.
             Tensor<1, dim> old_force;
+            double         stored = 0;
             if (h.in_contact)
-              old_force = h.friction - (h.friction * pair.n) * pair.n;
-            const double   kt    = tangential_factor * k;
+              {
+                old_force = h.friction - (h.friction * pair.n) * pair.n;
+                if (h.carried)
+                  old_force *= kt;
+                stored = h.carried ? old_force.norm_square() / (2 * kt) :
+                                     h.stick_energy;
+              }
             Tensor<1, dim> trial = old_force - kt * slip;
             const double   limit = friction_coefficient * p;
             pair.trial           = trial;
@@ -826,8 +961,7 @@ namespace amfrac
             // face or a changed stiffness takes from the spring is booked
             // too): zero while the node sticks on a fixed face.
             const double stick = trial.norm_square() / (2 * kt);
-            dissipated += -0.5 * (old_force + trial) * slip
-                          - (stick - (h.in_contact ? h.stick_energy : 0.));
+            dissipated += -0.5 * (old_force + trial) * slip - (stick - stored);
             energy += stick;
             friction_force += trial.norm();
             next.friction     = trial;
@@ -1293,6 +1427,11 @@ namespace amfrac
     std::vector<double> values{dissipation, double(nodes.size()), 2.};
     for (std::size_t i = 0; i < nodes.size(); ++i)
       {
+        // A mesh change is followed by an evaluation before any output
+        // step's checkpoint, which turns the carried stretches into forces.
+        AssertThrow(!history[i].carried,
+                    ExcMessage(
+                      "contact: a carried stick stretch in a checkpoint"));
         for (unsigned int d = 0; d < dim; ++d)
           values.push_back(history[i].friction[d]);
         values.push_back(history[i].stick_energy);

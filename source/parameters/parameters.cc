@@ -1784,12 +1784,6 @@ namespace amfrac
       const std::string enable = "Contact/Enable";
       if (!time.explicit_dynamics)
         check_static_contact_input();
-      require(!adaptivity.during_history(),
-              enable,
-              "the contact surfaces and their friction history are those "
-              "of the initial mesh; contact cannot be combined yet with a "
-              "mesh that adapts (Refine every, Error threshold, Process "
-              "zone elements)");
       require(discretization.degree == 1,
               enable,
               "node-to-face contact needs Discretization/Finite element "
@@ -1828,6 +1822,12 @@ namespace amfrac
               "Adaptivity/Refinement cycles",
               "the contact surfaces are those of the initial mesh in a "
               "static run; set Refinement cycles = 0 with Contact/Enable");
+      require(!adaptivity.during_history(),
+              "Contact/Enable",
+              "a static run's contact surfaces are those of the initial "
+              "mesh (their nodes may not hang); contact between the bodies "
+              "adapts with the mesh in explicit runs only: switch Refine "
+              "every, Error threshold and Process zone elements off");
     }
 
 

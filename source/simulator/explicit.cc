@@ -633,6 +633,12 @@ namespace amfrac
     // A mesh change moves the sphere's contact to the new face's nodes.
     const auto sphere_contact_energy
       = [&]() { return impactor ? impactor->contact_energy() : 0.; };
+    // What a crack insertion or a mesh change may change besides the
+    // kinetic energy (collective).
+    const auto stored_energy = [&]() {
+      return strain_energy + interface_work() + body_contact_energy()
+             + sphere_contact_energy();
+    };
     auto ledger_row = [&](const double t_row) {
       relevant_solution                                   = solution;
       const double                                kinetic = kinetic_energy();
@@ -942,9 +948,7 @@ namespace amfrac
             if (!chosen.empty())
               {
                 TimerOutput::Scope scope(timer, "crack insertion");
-                const double       before = kinetic_energy() + strain_energy
-                                      + interface_work() + body_contact_energy()
-                                      + sphere_contact_energy();
+                const double       before = kinetic_energy() + stored_energy();
                 insert_explicit_cracks(chosen,
                                        {&solution, &velocity, &last_good});
                 layout(false);
@@ -962,9 +966,7 @@ namespace amfrac
                   impactor->setup(dof_layer);
                 update_damping();
                 evaluate(t);
-                const double after = kinetic_energy() + strain_energy
-                                     + interface_work() + body_contact_energy()
-                                     + sphere_contact_energy();
+                const double after = kinetic_energy() + stored_energy();
                 log_crack_event(
                   {{"time", t},
                    {"step", static_cast<double>(n)},
@@ -996,51 +998,54 @@ namespace amfrac
         if (at_row && adaptive && out < n_out)
           {
             // The output step is written: a new mesh starts the next.
-            adapt_state(out,
-                        t,
-                        solution,
-                        [&](const bool by_estimate, const double zz_relative) {
-                          // prepare() takes a consistent velocity.
-                          hanging->distribute(velocity);
-                          MeshChange change;
-                          change.by_estimate    = by_estimate;
-                          change.zz_relative    = zz_relative;
-                          change.kinetic_before = kinetic_energy();
-                          change.energy_before
-                            = change.kinetic_before + strain_energy
-                              + interface_work() + sphere_contact_energy();
-                          change.momentum_before = linear_momentum();
-                          if (interfaces)
-                            change.ledger_before = interfaces->ledger(comm);
-                          change.report
-                            = move_explicit_state({&solution, &last_good},
-                                                  velocity);
-                          layout(false);
-                          lump_mass();
-                          split_mass();
-                          build_operators();
-                          // The sphere keeps its centre and velocity; its
-                          // contact nodes are those of the new face.
-                          if (impactor)
-                            impactor->setup(dof_layer);
-                          choose_step();
-                          if (interfaces)
-                            interfaces->set_time_step(dt);
-                          base_steps = n, base_row = out, base_t = t;
-                          impose_prescribed(t, solution);
-                          update_damping();
-                          evaluate(t);
-                          change.kinetic_after = kinetic_energy();
-                          change.energy_after
-                            = change.kinetic_after + strain_energy
-                              + interface_work() + sphere_contact_energy();
-                          change.momentum_after = linear_momentum();
-                          if (interfaces)
-                            change.ledger_after = interfaces->ledger(comm);
-                          remeshing_energy
-                            += change.energy_after - change.energy_before;
-                          log_mesh_change(out, t, change);
-                        });
+            adapt_state(
+              out,
+              t,
+              solution,
+              [&](const bool by_estimate, const double zz_relative) {
+                // prepare() takes a consistent velocity.
+                hanging->distribute(velocity);
+                MeshChange change;
+                change.by_estimate    = by_estimate;
+                change.zz_relative    = zz_relative;
+                change.kinetic_before = kinetic_energy();
+                change.energy_before  = change.kinetic_before + stored_energy();
+                change.momentum_before = linear_momentum();
+                if (interfaces)
+                  change.ledger_before = interfaces->ledger(comm);
+                change.report
+                  = move_explicit_state({&solution, &last_good}, velocity);
+                layout(false);
+                lump_mass();
+                split_mass();
+                build_operators();
+                // The sphere keeps its centre and velocity; its
+                // contact nodes are those of the new face.
+                if (impactor)
+                  impactor->setup(dof_layer);
+                // The surfaces of the new mesh, their stick
+                // springs carried by place; before the step,
+                // which their penalties bound.
+                if (body_contact)
+                  body_contact->setup(dof_layer,
+                                      released_faces(),
+                                      paired_faces(),
+                                      true);
+                choose_step();
+                if (interfaces)
+                  interfaces->set_time_step(dt);
+                base_steps = n, base_row = out, base_t = t;
+                impose_prescribed(t, solution);
+                update_damping();
+                evaluate(t);
+                change.kinetic_after  = kinetic_energy();
+                change.energy_after   = change.kinetic_after + stored_energy();
+                change.momentum_after = linear_momentum();
+                if (interfaces)
+                  change.ledger_after = interfaces->ledger(comm);
+                remeshing_energy += change.energy_after - change.energy_before;
+                log_mesh_change(out, t, change);
+              });
           }
         if (at_row || n % 10 == 0)
           checkpoint_after_step(out, n, at_row, n == steps_total(), save);

@@ -600,9 +600,10 @@ $contact
 subsection Discretization
   set Finite element degree = 2
 end"
-expect contact_adaptive "Contact/Enable" "$base
-$explicit
-$contact
+expect contact_static_adaptive "Contact/Enable" "$static_contact
+subsection Cohesive interfaces
+  set Interfaces = 1
+end
 subsection Adaptivity
   set Refine every = 1
 end"

@@ -41,9 +41,11 @@ namespace amfrac
    * of far faces is ever looked at. Narrow phase: the closest point of the
    * bilinear face (Newton on its two coordinates), the gap g along the face's
    * outward normal there; a node is in contact with the nearest face it
-   * penetrates by less than half the depth of the face's cell and half its
-   * shortest edge (deeper points belong to another face, e.g. the other side of
-   * a thin ply).
+   * penetrates by less than 0.9 times the smaller of half the depth of the
+   * face's cell and half its shortest edge (deeper points belong to another
+   * face, e.g. the other side of a thin ply; a node that hangs at the
+   * midpoint of an edge of the face's own cell lies exactly half that edge
+   * behind it).
    *
    * Forces: the node gets -k g n and the face's nodes +k g N_a n
    * (momentum exactly kept). For a fixed k that is the gradient of the
@@ -95,11 +97,15 @@ namespace amfrac
      * faces the DoF layer left untied; @p paired: those of them with a
      * cohesive partner (interfaces and cracks). The friction history of a
      * node moves with its key (its first cell and vertex), so it survives
-     * a crack insertion that renumbers the dofs. Collective. */
+     * a crack insertion that renumbers the dofs. After a @p mesh_change
+     * (refinement or coarsening: the keys, active cell indices, mean
+     * nothing on the new mesh) it moves by place instead: see
+     * carry_by_place(). Collective. */
     void
     setup(const TiedCopyDoFs<dim> &dofs,
           const FaceFilter        &released,
-          const FaceFilter        &paired);
+          const FaceFilter        &paired,
+          const bool               mesh_change = false);
 
     /** The contact forces on the laminate at the displacement @p u
      * (owned entries) into @p contact (owned entries, overwritten), and
@@ -261,11 +267,33 @@ namespace amfrac
 
     struct History
     {
+      /** The stick spring's force; if @p carried, its stretch
+       * (force / k_t) instead. */
       Tensor<1, dim> friction;
       /** |friction|^2 / (2 k_t) when it was stored. */
       double stick_energy = 0;
       bool   in_contact   = false;
+      /** Set by a mesh change: the next evaluate() turns the stretch into
+       * the force of the node's new stiffness. */
+      bool carried = false;
     };
+
+    /** setup() after a mesh change: each new node takes the stick
+     * stretch of the old surface at its place, on its side (@p old, the
+     * old nodes and faces): an old node's own, or the mean of the old
+     * face's vertices at the midpoint of one of its edges or at its
+     * centre (the new vertices refinement makes); the side whose outward
+     * normal is closest to the node's wins. The stretch times the new
+     * stiffness keeps the friction force and the stick energy of a
+     * uniform stick field; what changes is a mesh-change effect (the
+     * simulator books it with the remeshing energy), not dissipation. */
+    void
+    carry_by_place(const std::vector<Node>    &old_nodes,
+                   const std::vector<Face>    &old_faces,
+                   const std::vector<History> &old_history);
+    /** The stick stretch of a history record (zero if not sticking). */
+    static Tensor<1, dim>
+    stretch_of(const History &h);
 
     /** Closest point of @p x on the face with vertex positions
      * @p vertices: whether it lies within @p inside (in face coordinates)
