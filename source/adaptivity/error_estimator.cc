@@ -213,13 +213,20 @@ namespace amfrac
           for (const unsigned int w : neighbor->vertex_indices())
             needed[neighbor->vertex_index(w)] = true;
     };
+    const auto has_vertex = [](const auto &cell, const unsigned int v) {
+      for (const unsigned int i : cell->vertex_indices())
+        if (cell->vertex_index(i) == v)
+          return true;
+      return false;
+    };
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           mark_patches_of(cell);
+          // The cells a vertex of this one hangs on.
           for (const unsigned int v : cell->vertex_indices())
             for (const auto &neighbor : cells_at[cell->vertex_index(v)])
-              if (neighbor->level() < cell->level())
+              if (!has_vertex(neighbor, cell->vertex_index(v)))
                 mark_patches_of(neighbor);
         }
 
@@ -300,14 +307,8 @@ namespace amfrac
             // vertex: a coarse cell next to a hanging vertex gives samples
             // but no nodes (its far nodes would be an extrapolation, and a
             // rank owning a cell there would not see this patch).
-            const auto has_vertex = [v](const auto &cell) {
-              for (const unsigned int i : cell->vertex_indices())
-                if (cell->vertex_index(i) == v)
-                  return true;
-              return false;
-            };
             for (const auto &tria_cell : cells_at[v])
-              if (tria_cell->material_id() == ply && has_vertex(tria_cell))
+              if (tria_cell->material_id() == ply && has_vertex(tria_cell, v))
                 {
                   const auto cell
                     = on_handler(tria_cell, recovery.copy_handler());

@@ -95,7 +95,8 @@ namespace amfrac
     for (const auto &[key, indices] : heirs)
       {
         const Carried &parent = old.at(key);
-        double         total  = 0;
+        Assert(!parent.history.carried, ExcInternalError());
+        double total = 0;
         for (const unsigned int i : indices)
           total += nodes[i].stiffness;
         for (const unsigned int i : indices)
@@ -175,7 +176,7 @@ namespace amfrac
           vertices[v] = old_nodes[face.nodes[v]].reference;
         const Tensor<1, dim> side = face.sign * normal(vertices, face_middle());
         add_mean({face.nodes.begin(), face.nodes.end()}, side);
-        if (dim == 3)
+        if constexpr (dim == 3)
           // The edges of a quadrilateral face: vertices 0-1, 2-3, 0-2, 1-3
           // in deal.II's numbering.
           for (const auto &[a, b] :
@@ -214,7 +215,9 @@ namespace amfrac
           if (it->x.distance(x) <= tolerance
               && (best == nullptr || closer(*it, *best, side)))
             best = &*it;
-        if (best == nullptr || !best->in_contact)
+        // A place of another body (the other side of a released face)
+        // is never this node's.
+        if (best == nullptr || !best->in_contact || !(best->side * side > 0))
           continue;
         history[i].in_contact = true;
         history[i].carried    = true;
@@ -873,11 +876,13 @@ namespace amfrac
             const double         gap = offset(s, face, xi) * n;
             // Gaps of round-off (faces brought back to where they
             // touched) are not contact: their count would depend on the
-            // order of sums, i.e. on the partition. The reach stops short
-            // of the depth: a node that hangs at the midpoint of an edge
-            // of the face's own cell lies exactly half that edge behind it.
-            if (!(gap < -1e-13 * face.depth && gap > -0.9 * face.depth)
-                || !(nodes[s].area_penalty * n < 0))
+            // order of sums, i.e. on the partition. Nor is a node whose
+            // faces do not look at the face (a node that hangs at the
+            // midpoint of an edge of the face's own cell lies half that
+            // edge behind it, on a face at right angles to it).
+            const Tensor<1, dim> &facing = nodes[s].area_penalty;
+            if (!(gap < -1e-13 * face.depth && gap > -face.depth)
+                || !(facing * n < -1e-3 * facing.norm()))
               continue;
             // A face the node projects into beats one whose edge it has
             // passed (whose gap turns with the face and whose force is not
@@ -931,22 +936,27 @@ namespace amfrac
                 -= N[a]
                    * (displacements[face.nodes[a]] - previous[face.nodes[a]]);
             slip -= (slip * pair.n) * pair.n;
-            const double kt = tangential_factor * k;
+            const double kt    = tangential_factor * k;
+            const double limit = friction_coefficient * p;
             // A mesh change carried the spring's stretch: its force is
-            // that of the node's new stiffness, and its energy is where
-            // the dissipation starts from.
+            // that of the node's new stiffness, within the new cone, and
+            // its energy is where the dissipation starts from (what the
+            // change takes from the springs is the change's, not friction's).
             Tensor<1, dim> old_force;
             double         stored = 0;
             if (h.in_contact)
               {
                 old_force = h.friction - (h.friction * pair.n) * pair.n;
                 if (h.carried)
-                  old_force *= kt;
+                  {
+                    old_force *= kt;
+                    if (old_force.norm() > limit)
+                      old_force *= limit / old_force.norm();
+                  }
                 stored = h.carried ? old_force.norm_square() / (2 * kt) :
                                      h.stick_energy;
               }
             Tensor<1, dim> trial = old_force - kt * slip;
-            const double   limit = friction_coefficient * p;
             pair.trial           = trial;
             pair.kt              = kt;
             // On the cone within round-off (a node that slid, evaluated
@@ -1036,9 +1046,50 @@ namespace amfrac
 
   template <int dim>
   void
-  BodyContact<dim>::add_couplings(const Vector                      &u,
+  BodyContact<dim>::add_couplings(const Vector                    &u,
+                                  const AffineConstraints<double> &constraints,
                                   TrilinosWrappers::SparsityPattern &pattern)
   {
+    // The parents of every surface dof that hangs, from its owner.
+    std::vector<double> mine;
+    for (const unsigned int i : owned_nodes)
+      for (const auto dof : nodes[i].dofs)
+        {
+          const auto *entries = constraints.get_constraint_entries(dof);
+          if (entries == nullptr || entries->empty())
+            continue;
+          mine.push_back(dof);
+          mine.push_back(entries->size());
+          for (const auto &[parent, weight] : *entries)
+            {
+              mine.push_back(parent);
+              mine.push_back(weight);
+            }
+        }
+    const std::vector<double> all = concatenate_over_ranks(mine, comm);
+    hanging_parents.clear();
+    for (std::size_t k = 0; k < all.size();)
+      {
+        auto &parents
+          = hanging_parents[static_cast<types::global_dof_index>(all[k])];
+        const auto n = static_cast<std::size_t>(all[k + 1]);
+        for (std::size_t j = 0; j < n; ++j)
+          parents.emplace_back(static_cast<types::global_dof_index>(
+                                 all[k + 2 + 2 * j]),
+                               all[k + 3 + 2 * j]);
+        k += 2 + 2 * n;
+      }
+    // A supported dof keeps its entries here: the bulk's diagonal is there.
+    const auto through = [&](const types::global_dof_index         dof,
+                             std::vector<types::global_dof_index> &into) {
+      const auto hanging = hanging_parents.find(dof);
+      if (hanging == hanging_parents.end())
+        into.push_back(dof);
+      else
+        for (const auto &[parent, weight] : hanging->second)
+          into.push_back(parent);
+    };
+    std::vector<types::global_dof_index> rows, columns;
     gather_positions(u);
     candidates_built = false;
     update_candidates();
@@ -1057,27 +1108,20 @@ namespace amfrac
           members.insert(members.end(),
                          faces[candidates[c]].nodes.begin(),
                          faces[candidates[c]].nodes.end());
+          columns.clear();
+          for (const auto dof : dofs)
+            through(dof, columns);
+          std::sort(columns.begin(), columns.end());
+          columns.erase(std::unique(columns.begin(), columns.end()),
+                        columns.end());
+          rows.clear();
           for (const unsigned int node : members)
             if (local_of_node[node] >= 0)
               for (const auto row : nodes[node].dofs)
-                pattern.add_entries(row, dofs.begin(), dofs.end());
+                through(row, rows);
+          for (const auto row : rows)
+            pattern.add_entries(row, columns.begin(), columns.end());
         }
-  }
-
-
-
-  template <int dim>
-  bool
-  BodyContact<dim>::has_hanging_surface_nodes(
-    const AffineConstraints<double> &constraints) const
-  {
-    bool hanging = false;
-    for (const unsigned int i : owned_nodes)
-      for (const auto dof : nodes[i].dofs)
-        hanging = hanging
-                  || (constraints.is_constrained(dof)
-                      && !constraints.get_constraint_entries(dof)->empty());
-    return Utilities::MPI::max(hanging ? 1 : 0, comm) == 1;
   }
 
 
@@ -1266,7 +1310,9 @@ namespace amfrac
         increment[a] = displacements[face.nodes[a]] - previous[face.nodes[a]];
         w -= N[a] * increment[a];
       }
-    const History       &h     = history[pair.slave];
+    const History &h = history[pair.slave];
+    // Static runs only: no mesh change has carried a stretch here.
+    Assert(!h.carried, ExcInternalError());
     const Tensor<1, dim> old   = h.in_contact ? h.friction : Tensor<1, dim>();
     const Tensor<1, dim> slip  = P * w;
     const double         k     = -(nodes[pair.slave].area_penalty * n);
@@ -1334,33 +1380,63 @@ namespace amfrac
 
   template <int dim>
   void
+  BodyContact<dim>::matrix_targets(
+    const types::global_dof_index                            dof,
+    const AffineConstraints<double>                         &constraints,
+    std::vector<std::pair<types::global_dof_index, double>> &into) const
+  {
+    into.clear();
+    const auto hanging = hanging_parents.find(dof);
+    if (hanging != hanging_parents.end())
+      into = hanging->second;
+    // A supported dof (where this rank stores the constraints) drops out:
+    // its row keeps the bulk's diagonal, and the increments vanish there.
+    else if (!(constraints.can_store_line(dof)
+               && constraints.is_constrained(dof)))
+      into.emplace_back(dof, 1.);
+  }
+
+
+
+  template <int dim>
+  void
   BodyContact<dim>::add_tangent(const AffineConstraints<double> &constraints,
                                 TrilinosWrappers::SparseMatrix  &tangent) const
   {
-    std::vector<double> row_values(dim * n_members);
+    std::vector<std::vector<std::pair<types::global_dof_index, double>>>
+                                         targets(dim * n_members);
+    std::vector<types::global_dof_index> columns;
+    std::vector<double>                  values;
     for (const Pair &pair : pairs)
       {
-        // Every rank holds all pairs; each computes the tangents of those
-        // that reach its rows only.
+        // Every rank holds all pairs; each adds the rows it owns (through
+        // the constraints), so that each row is added once.
         if (!owns_a_member(pair))
           continue;
         const auto        dofs    = pair_dofs(pair.slave, pair.face);
         const PairTangent K       = pair_tangent(pair);
         const auto        members = members_of(pair);
-        // On the rows this rank owns and that are free (a supported row
-        // keeps the bulk's diagonal only).
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          matrix_targets(dofs[i], constraints, targets[i]);
         for (unsigned int I = 0; I < n_members; ++I)
           if (local_of_node[members[I]] >= 0)
             for (unsigned int d = 0; d < dim; ++d)
-              {
-                const auto row = dofs[dim * I + d];
-                if (constraints.is_constrained(row))
-                  continue;
-                for (unsigned int J = 0; J < n_members; ++J)
-                  for (unsigned int e = 0; e < dim; ++e)
-                    row_values[dim * J + e] = K[I][J][d][e];
-                tangent.add(row, dofs.size(), dofs.data(), row_values.data());
-              }
+              for (const auto &[row, row_weight] : targets[dim * I + d])
+                {
+                  columns.clear();
+                  values.clear();
+                  for (unsigned int J = 0; J < n_members; ++J)
+                    for (unsigned int e = 0; e < dim; ++e)
+                      for (const auto &[column, weight] : targets[dim * J + e])
+                        {
+                          columns.push_back(column);
+                          values.push_back(row_weight * weight * K[I][J][d][e]);
+                        }
+                  tangent.add(row,
+                              columns.size(),
+                              columns.data(),
+                              values.data());
+                }
       }
   }
 

@@ -1824,10 +1824,10 @@ namespace amfrac
               "static run; set Refinement cycles = 0 with Contact/Enable");
       require(!adaptivity.during_history(),
               "Contact/Enable",
-              "a static run's contact surfaces are those of the initial "
-              "mesh (their nodes may not hang); contact between the bodies "
-              "adapts with the mesh in explicit runs only: switch Refine "
-              "every, Error threshold and Process zone elements off");
+              "a static run's contact surfaces and their friction "
+              "history are those of the initial mesh; contact between the "
+              "bodies adapts with the mesh in explicit runs only: switch "
+              "Refine every, Error threshold and Process zone elements off");
     }
 
 

@@ -179,14 +179,6 @@ namespace amfrac
         = std::make_unique<BodyContact<dim>>(parameters.contact, comm);
     body_contact->set_static();
     body_contact->setup(dof_layer, released_faces(), paired_faces());
-    // A hanging node's rows belong to its parents, which the contact
-    // tangent does not distribute to.
-    if (body_contact->has_hanging_surface_nodes(newton->increment_constraints))
-      throw InputError("Contact/Enable",
-                       "static contact needs contact surfaces without "
-                       "hanging nodes; refine the laminate uniformly "
-                       "(Geometry/Refinement region, Region refinements "
-                       "make hanging nodes)");
   }
 
 
@@ -204,7 +196,7 @@ namespace amfrac
     if (interfaces)
       interfaces->add_couplings(newton->increment_constraints, pattern);
     if (body_contact)
-      body_contact->add_couplings(u, pattern);
+      body_contact->add_couplings(u, newton->increment_constraints, pattern);
     pattern.compress();
     // The solver refers to the matrix: it goes first.
     if (newton_solver)

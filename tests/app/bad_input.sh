@@ -569,11 +569,6 @@ expect contact_static_cycles "Adaptivity/Refinement cycles" "$static_contact
 subsection Adaptivity
   set Refinement cycles = 2
 end"
-expect contact_static_hanging "hanging nodes" "$static_contact
-subsection Geometry
-  set Refinement region = x < 5
-  set Region refinements = 1
-end"
 expect contact_unbonded_disabled "Contact/Unbonded interfaces" "$base
 $explicit
 subsection Contact

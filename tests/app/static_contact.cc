@@ -42,9 +42,13 @@
 //   (within 5 %), at most 4 Newton iterations per step, balance 1e-4;
 // - stack_cracks: the stack with friction and crack insertion in the top
 //   ply (tests/app/contact_stack_cracks.prm), see stack_cracks().
+// - hanging: blocks with the top block's corner column refined once
+//   (tests/app/contact_hanging.prm), so that its contact surface has
+//   hanging nodes; see hanging().
 // usage: app_static_contact blocks|blocks_2d|shifted|friction|stick|stack
 //        SCENE.prm WORKDIR
-//        app_static_contact stack_cracks SCENE.prm APPENDED.prm WORKDIR
+//        app_static_contact stack_cracks|hanging SCENE.prm APPENDED.prm
+//        WORKDIR
 #include "../check.h"
 #include "scene.h"
 
@@ -136,6 +140,48 @@ namespace
     const auto simulator
       = amfrac_test::run_scene<2>(scene, text + output_to(workdir));
     check_pressed(simulator->history(), 2, 6, "reaction_y-_y");
+  }
+
+  /** The blocks with the top block's corner column refined once
+   * (Geometry/Refinement region): the contact surface of the top block has
+   * hanging nodes, whose rows and columns of the contact tangent go to
+   * their parents. */
+  void
+  hanging(const std::string &scene,
+          const std::string &refined,
+          const std::string &workdir)
+  {
+    const auto simulator = amfrac_test::run_scene<3>(
+      scene, amfrac_test::file_text(refined) + output_to(workdir));
+    const History &h     = simulator->history();
+    const double   p     = d / (2 * ply / modulus + 1 / penalty);
+    const double   force = h.value(1, "body_contact_normal_force");
+    std::cout << "hanging: force " << force << " of " << p * 4 << ", reaction "
+              << h.value(1, "reaction_z-_z") << ", nodes "
+              << h.value(1, "body_contact_nodes") << ", penetration "
+              << h.value(1, "body_contact_penetration") << " of " << p / penalty
+              << ", balance " << relative_balance(h) << ", Newton iterations "
+              << largest(h, "newton_iterations") << std::endl;
+    // The refined face's new nodes rest on their own springs only (the
+    // coarse face's nodes press on its old vertices), so they sink deeper
+    // and the contact is softer than on the matching mesh: the force is
+    // 0.42 % below the springs in series, the deepest penetration 1.8
+    // times p / Penalty (measured). Newton converges quadratically, 3
+    // iterations in the first step (30, 160, 8.3e-4, 9.9e-10: contact
+    // starts in its first iterate) and 2 in the others (the normals of the
+    // faces the new nodes project into turn with the strain); without the
+    // parents' share of the hanging nodes' rows and columns it converges
+    // linearly, in 13 and 12 (measured).
+    CHECK(h.value(1, "body_contact_nodes") > 18);
+    CHECK_RELATIVE(h.value(1, "reaction_z-_z"), force, 1e-6);
+    CHECK_RELATIVE(force, p * 4, 1e-2);
+    CHECK(h.value(1, "body_contact_penetration") < 2 * p / penalty);
+    CHECK(largest(h, "newton_iterations") <= 3);
+    for (const std::size_t r : {3, 4})
+      CHECK(h.value(r, "body_contact_nodes") == 0);
+    // The trapezoidal rule on a contact that stiffens as nodes come in
+    // (measured 1.7e-8).
+    CHECK(relative_balance(h) < 1e-7);
   }
 
   void
@@ -362,14 +408,17 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool appended = argc > 1 && std::string(argv[1]) == "stack_cracks";
+  const bool                       appended = argc > 1
+                        && (std::string(argv[1]) == "stack_cracks"
+                            || std::string(argv[1]) == "hanging");
   if (argc != (appended ? 5 : 4))
     {
-      std::cerr << "usage: app_static_contact "
-                   "blocks|blocks_2d|shifted|friction|stick|stack SCENE.prm "
-                   "WORKDIR\n       app_static_contact stack_cracks SCENE.prm "
-                   "APPENDED.prm WORKDIR"
-                << std::endl;
+      std::cerr
+        << "usage: app_static_contact "
+           "blocks|blocks_2d|shifted|friction|stick|stack SCENE.prm "
+           "WORKDIR\n       app_static_contact stack_cracks|hanging SCENE.prm "
+           "APPENDED.prm WORKDIR"
+        << std::endl;
       return 2;
     }
   const std::string which = argv[1], scene = argv[2], workdir = argv[argc - 1];
@@ -377,6 +426,8 @@ main(int argc, char **argv)
     blocks(scene, workdir);
   else if (which == "blocks_2d")
     blocks_2d(scene, workdir);
+  else if (which == "hanging")
+    hanging(scene, argv[3], workdir);
   else if (which == "shifted")
     shifted(scene, workdir);
   else if (which == "friction")

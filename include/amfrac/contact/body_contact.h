@@ -41,11 +41,12 @@ namespace amfrac
    * of far faces is ever looked at. Narrow phase: the closest point of the
    * bilinear face (Newton on its two coordinates), the gap g along the face's
    * outward normal there; a node is in contact with the nearest face it
-   * penetrates by less than 0.9 times the smaller of half the depth of the
-   * face's cell and half its shortest edge (deeper points belong to another
-   * face, e.g. the other side of a thin ply; a node that hangs at the
-   * midpoint of an edge of the face's own cell lies exactly half that edge
-   * behind it).
+   * penetrates by less than half the depth of the face's cell and half its
+   * shortest edge (deeper points belong to another face, e.g. the other
+   * side of a thin ply) and that its own faces look at (area_penalty . n
+   * below -1e-3 |area_penalty|: a node that hangs at the midpoint of an
+   * edge of the face's own cell lies half that edge behind it, on a face at
+   * right angles to it).
    *
    * Forces: the node gets -k g n and the face's nodes +k g N_a n
    * (momentum exactly kept). For a fixed k that is the gradient of the
@@ -114,11 +115,14 @@ namespace amfrac
     evaluate(const Vector &u, Vector &contact);
 
     /** Static runs: the entries coupling every surface node to the nodes
-     * of its candidate faces at the displacement @p u, into the rows of
-     * @p pattern this rank owns; they are remembered for
-     * couplings_outdated(). Collective. */
+     * of its candidate faces at the displacement @p u, from the rows this
+     * rank owns, through @p constraints (a hanging node's row and column
+     * go to its parents); they are remembered for couplings_outdated().
+     * Collective. */
     void
-    add_couplings(const Vector &u, TrilinosWrappers::SparsityPattern &pattern);
+    add_couplings(const Vector                      &u,
+                  const AffineConstraints<double>   &constraints,
+                  TrilinosWrappers::SparsityPattern &pattern);
 
     /** A search since add_couplings() found a candidate face of a node
      * whose entries are not in the pattern. */
@@ -128,14 +132,10 @@ namespace amfrac
       return outdated;
     }
 
-    /** Whether a surface node this rank owns is a hanging node of
-     * @p constraints (static contact needs none). Collective. */
-    bool
-    has_hanging_surface_nodes(
-      const AffineConstraints<double> &constraints) const;
-
-    /** The tangent of the pairs of the last evaluate() into the owned rows
-     * of @p tangent that @p constraints leaves free (static runs). */
+    /** The tangent of the pairs of the last evaluate(), from the rows
+     * this rank owns, through @p constraints into @p tangent (a hanging
+     * node's rows and columns go to its parents, a supported row keeps the
+     * bulk's diagonal; static runs; call compress(add) after it). */
     void
     add_tangent(const AffineConstraints<double> &constraints,
                 TrilinosWrappers::SparseMatrix  &tangent) const;
@@ -282,11 +282,14 @@ namespace amfrac
      * stretch of the old surface at its place, on its side (@p old, the
      * old nodes and faces): an old node's own, or the mean of the old
      * face's vertices at the midpoint of one of its edges or at its
-     * centre (the new vertices refinement makes); the side whose outward
-     * normal is closest to the node's wins. The stretch times the new
+     * centre (the new vertices refinement makes on flat faces; a vertex a
+     * curved manifold moves off them starts without a spring); the place
+     * whose outward normal is closest to the node's wins (an old node on
+     * a tie), and only on the node's side. The stretch times the new
      * stiffness keeps the friction force and the stick energy of a
-     * uniform stick field; what changes is a mesh-change effect (the
-     * simulator books it with the remeshing energy), not dissipation. */
+     * uniform stick field; what changes (also where the new cone is
+     * narrower) is a mesh-change effect, booked by the simulator with the
+     * remeshing energy, not dissipation. */
     void
     carry_by_place(const std::vector<Node>    &old_nodes,
                    const std::vector<Face>    &old_faces,
@@ -431,6 +434,21 @@ namespace amfrac
     std::vector<Point<dim>>   built_positions;
     double                    margin           = 0;
     bool                      candidates_built = false;
+    /** Static runs: the parents (and weights) of every surface dof that
+     * hangs, gathered from the ranks that own them by add_couplings() (a
+     * rank's constraints hold its relevant dofs only, and a face in
+     * contact may lie anywhere). */
+    std::map<types::global_dof_index,
+             std::vector<std::pair<types::global_dof_index, double>>>
+      hanging_parents;
+    /** A surface dof's targets in the matrix: the parents of a hanging
+     * one, none for a supported row of this rank (@p constraints: the
+     * increments' constraints), else itself. */
+    void
+    matrix_targets(
+      const types::global_dof_index                            dof,
+      const AffineConstraints<double>                         &constraints,
+      std::vector<std::pair<types::global_dof_index, double>> &into) const;
     /** Static runs: the candidates whose entries are in the matrix (CSR,
      * each node's faces sorted), and whether a search found others. */
     std::vector<unsigned int> coupled_start, coupled;
