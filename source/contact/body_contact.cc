@@ -407,6 +407,7 @@ namespace amfrac
     pairs.clear();
     coupled_start.clear();
     coupled.clear();
+    constrained_dofs.clear();
     outdated         = false;
     pairs_factorized = false;
     history.assign(nodes.size(), History());
@@ -710,7 +711,7 @@ namespace amfrac
 
   template <int dim>
   bool
-  BodyContact<dim>::coincident(const unsigned int s, const Face &face) const
+  BodyContact<dim>::excluded(const unsigned int s, const Face &face) const
   {
     std::array<Point<dim>, n_face_vertices> v;
     for (unsigned int a = 0; a < n_face_vertices; ++a)
@@ -719,8 +720,11 @@ namespace amfrac
     Point<dim>     on_face;
     if (!project(v, nodes[s].reference, xi, on_face, 1e-9))
       return false;
-    return nodes[s].reference.distance(on_face)
-           <= 1e-9 * v[0].distance(v[n_face_vertices - 1]);
+    const double round_off = 1e-9 * v[0].distance(v[n_face_vertices - 1]);
+    const double gap
+      = (nodes[s].reference - on_face) * (face.sign * normal(v, xi));
+    return gap < -round_off
+           || (face.exclude_coincident && std::abs(gap) <= round_off);
   }
 
 
@@ -824,7 +828,7 @@ namespace amfrac
             bool in_box          = true;
             for (unsigned int d = 0; d < dim; ++d)
               in_box = in_box && x[d] >= lo[d] && x[d] <= hi[d];
-            if (in_box && !(face.exclude_coincident && coincident(s, face)))
+            if (in_box && !excluded(s, face))
               candidates.push_back(it->second);
           }
         candidate_start.push_back(candidates.size());
@@ -1050,13 +1054,14 @@ namespace amfrac
                                   const AffineConstraints<double> &constraints,
                                   TrilinosWrappers::SparsityPattern &pattern)
   {
-    // The parents of every surface dof that hangs, from its owner.
+    // The parents of every surface dof that hangs or is supported (none),
+    // from its owner: the same matrix on any partition.
     std::vector<double> mine;
     for (const unsigned int i : owned_nodes)
       for (const auto dof : nodes[i].dofs)
         {
           const auto *entries = constraints.get_constraint_entries(dof);
-          if (entries == nullptr || entries->empty())
+          if (entries == nullptr)
             continue;
           mine.push_back(dof);
           mine.push_back(entries->size());
@@ -1067,11 +1072,11 @@ namespace amfrac
             }
         }
     const std::vector<double> all = concatenate_over_ranks(mine, comm);
-    hanging_parents.clear();
+    constrained_dofs.clear();
     for (std::size_t k = 0; k < all.size();)
       {
         auto &parents
-          = hanging_parents[static_cast<types::global_dof_index>(all[k])];
+          = constrained_dofs[static_cast<types::global_dof_index>(all[k])];
         const auto n = static_cast<std::size_t>(all[k + 1]);
         for (std::size_t j = 0; j < n; ++j)
           parents.emplace_back(static_cast<types::global_dof_index>(
@@ -1079,15 +1084,12 @@ namespace amfrac
                                all[k + 3 + 2 * j]);
         k += 2 + 2 * n;
       }
-    // A supported dof keeps its entries here: the bulk's diagonal is there.
+    std::vector<std::pair<types::global_dof_index, double>> targets;
     const auto through = [&](const types::global_dof_index         dof,
                              std::vector<types::global_dof_index> &into) {
-      const auto hanging = hanging_parents.find(dof);
-      if (hanging == hanging_parents.end())
-        into.push_back(dof);
-      else
-        for (const auto &[parent, weight] : hanging->second)
-          into.push_back(parent);
+      matrix_targets(dof, targets);
+      for (const auto &[target, weight] : targets)
+        into.push_back(target);
     };
     std::vector<types::global_dof_index> rows, columns;
     gather_positions(u);
@@ -1382,17 +1384,15 @@ namespace amfrac
   void
   BodyContact<dim>::matrix_targets(
     const types::global_dof_index                            dof,
-    const AffineConstraints<double>                         &constraints,
     std::vector<std::pair<types::global_dof_index, double>> &into) const
   {
+    // A supported dof has no parents and drops out: its row keeps the
+    // bulk's diagonal, and the increments vanish there.
     into.clear();
-    const auto hanging = hanging_parents.find(dof);
-    if (hanging != hanging_parents.end())
-      into = hanging->second;
-    // A supported dof (where this rank stores the constraints) drops out:
-    // its row keeps the bulk's diagonal, and the increments vanish there.
-    else if (!(constraints.can_store_line(dof)
-               && constraints.is_constrained(dof)))
+    const auto constrained = constrained_dofs.find(dof);
+    if (constrained != constrained_dofs.end())
+      into = constrained->second;
+    else
       into.emplace_back(dof, 1.);
   }
 
@@ -1400,8 +1400,7 @@ namespace amfrac
 
   template <int dim>
   void
-  BodyContact<dim>::add_tangent(const AffineConstraints<double> &constraints,
-                                TrilinosWrappers::SparseMatrix  &tangent) const
+  BodyContact<dim>::add_tangent(TrilinosWrappers::SparseMatrix &tangent) const
   {
     std::vector<std::vector<std::pair<types::global_dof_index, double>>>
                                          targets(dim * n_members);
@@ -1417,7 +1416,7 @@ namespace amfrac
         const PairTangent K       = pair_tangent(pair);
         const auto        members = members_of(pair);
         for (unsigned int i = 0; i < dofs.size(); ++i)
-          matrix_targets(dofs[i], constraints, targets[i]);
+          matrix_targets(dofs[i], targets[i]);
         for (unsigned int I = 0; I < n_members; ++I)
           if (local_of_node[members[I]] >= 0)
             for (unsigned int d = 0; d < dim; ++d)

@@ -281,7 +281,7 @@ namespace amfrac
         if (tangent)
           {
             TimerOutput::Scope scope(timer, "body contact");
-            body_contact->add_tangent(n.increment_constraints, *tangent);
+            body_contact->add_tangent(*tangent);
             tangent->compress(VectorOperation::add);
           }
       }

@@ -189,7 +189,7 @@ namespace
       *slipping = std::abs(friction / (0.3 * normal) - 1) < 1e-12;
 
     TrilinosWrappers::SparseMatrix matrix(pattern);
-    contact.add_tangent(none, matrix);
+    contact.add_tangent(matrix);
     matrix.compress(VectorOperation::add);
     TrilinosVector product(owned, MPI_COMM_WORLD);
     contact.add_tangent_product(d, product);

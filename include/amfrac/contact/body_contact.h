@@ -133,12 +133,12 @@ namespace amfrac
     }
 
     /** The tangent of the pairs of the last evaluate(), from the rows
-     * this rank owns, through @p constraints into @p tangent (a hanging
-     * node's rows and columns go to its parents, a supported row keeps the
-     * bulk's diagonal; static runs; call compress(add) after it). */
+     * this rank owns, into @p tangent through the constraints that the
+     * last add_couplings() was given (a hanging node's rows and columns go
+     * to its parents, a supported row keeps the bulk's diagonal; static
+     * runs; call compress(add) after it). */
     void
-    add_tangent(const AffineConstraints<double> &constraints,
-                TrilinosWrappers::SparseMatrix  &tangent) const;
+    add_tangent(TrilinosWrappers::SparseMatrix &tangent) const;
 
     /** @p product += that tangent times @p direction (owned entries).
      * Collective. */
@@ -315,9 +315,12 @@ namespace amfrac
            const Point<dim - 1>                          &xi) const;
     static std::array<double, n_face_vertices>
     shape_values(const Point<dim - 1> &xi);
-    /** Node @p s lay on face @p f in the undeformed laminate. */
+    /** Node @p s is never in contact with @p face: in the undeformed
+     * laminate it lay behind it (inside the face's body: a node of the
+     * face's own cell or one that hangs on it), or on it if the face
+     * excludes coincident nodes. */
     bool
-    coincident(const unsigned int s, const Face &face) const;
+    excluded(const unsigned int s, const Face &face) const;
     void
     gather_positions(const Vector &u);
     /** The owned entries of @p u at every surface node, gathered. */
@@ -435,19 +438,17 @@ namespace amfrac
     double                    margin           = 0;
     bool                      candidates_built = false;
     /** Static runs: the parents (and weights) of every surface dof that
-     * hangs, gathered from the ranks that own them by add_couplings() (a
-     * rank's constraints hold its relevant dofs only, and a face in
-     * contact may lie anywhere). */
+     * hangs (none for a supported one), gathered from the ranks that own
+     * them by add_couplings() (a rank's constraints hold its relevant dofs
+     * only, and a face in contact may lie anywhere). */
     std::map<types::global_dof_index,
              std::vector<std::pair<types::global_dof_index, double>>>
-      hanging_parents;
-    /** A surface dof's targets in the matrix: the parents of a hanging
-     * one, none for a supported row of this rank (@p constraints: the
-     * increments' constraints), else itself. */
+      constrained_dofs;
+    /** A surface dof's targets in the matrix: its parents if it is
+     * constrained (none if supported), else itself. */
     void
     matrix_targets(
       const types::global_dof_index                            dof,
-      const AffineConstraints<double>                         &constraints,
       std::vector<std::pair<types::global_dof_index, double>> &into) const;
     /** Static runs: the candidates whose entries are in the matrix (CSR,
      * each node's faces sorted), and whether a search found others. */
