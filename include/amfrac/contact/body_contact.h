@@ -25,13 +25,15 @@ namespace amfrac
    * The surface is every outer face and both sides of every released face
    * (cohesive interfaces, cracks, unbonded interfaces). Each surface node
    * (a reduced node) is a slave of every surface face it is not excluded
-   * from: the faces the node is a vertex of are excluded, and so is a face
-   * of an outer or a paired surface (an interface or crack whose cohesive
-   * element keeps its own contact) if the node lay on it in the undeformed
-   * laminate (the other faces of its own cells lie too far behind it for
-   * the depth test below). So a crack face meeting a face it was never paired
-   * with, a fragment hitting another or a sublaminate sliding far along its
-   * neighbour are in contact, and a cohesive pair is not counted twice.
+   * from: the faces the node is a vertex of are excluded, so is every
+   * face the node lay behind in the undeformed laminate (inside its body:
+   * a node that hangs on the face's own cell lies only half an edge
+   * behind it), and so is a face of an outer or a paired surface (an
+   * interface or crack whose cohesive element keeps its own contact) if
+   * the node lay on it in the undeformed laminate. So a crack face meeting
+   * a face it was never paired with, a fragment hitting another or a
+   * sublaminate sliding far along its neighbour are in contact, and a
+   * cohesive pair is not counted twice.
    *
    * Search: each face's box (its vertices, the points a depth behind
    * them, 2 % of its size and twice a margin) in a uniform grid whose cell
