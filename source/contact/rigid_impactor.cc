@@ -147,10 +147,19 @@ namespace amfrac
     // Keyed by the node's first reduced dof: the same node seen from
     // several faces gathers its area once per face.
     std::map<types::global_dof_index, Node> found;
+    const std::vector<Face>                 old_faces = std::move(faces);
+    faces.clear();
     for (const auto &cell : dofs.copy_handler().active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
         if (cell->at_boundary(f) && cell->face(f)->boundary_id() == boundary_id)
           {
+            const auto face = cell->face(f);
+            Face       kept_face{{}, cell->center() - face->center(), 0};
+            kept_face.side /= kept_face.side.norm();
+            kept_face.size = face->diameter();
+            for (const unsigned int v : face->vertex_indices())
+              kept_face.vertices.push_back(face->vertex(v));
+            faces.push_back(std::move(kept_face));
             dofs.get_dof_indices(cell, indices);
             face_values.reinit(cell, f);
             for (const unsigned int i : dofs.dofs_on_face(f))
@@ -200,7 +209,7 @@ namespace amfrac
     history.assign(nodes.size(), History());
     trial_history = history;
     if (!kept.empty())
-      restore_history(kept, false);
+      restore_history(kept, false, old_faces);
   }
 
 
@@ -656,36 +665,111 @@ namespace amfrac
 
 
   template <int dim>
-  std::vector<long>
-  RigidImpactor<dim>::heirs_of(const std::vector<double> &values,
-                               const std::size_t          n_saved,
-                               const unsigned int         stride,
-                               const bool                 with_sides) const
+  long
+  RigidImpactor<dim>::closest_record(const Records        &records,
+                                     const Point<dim>     &position,
+                                     const Tensor<1, dim> &side) const
   {
-    std::map<std::array<double, dim>, std::vector<std::size_t>> at_position;
-    for (std::size_t k = 0; k < n_saved; ++k)
+    const auto there = records.at_position.find(key_of(position));
+    if (there == records.at_position.end())
+      return -1;
+    long   source  = -1;
+    double closest = -std::numeric_limits<double>::max();
+    for (const std::size_t k : there->second)
       {
-        std::array<double, dim> key;
-        std::copy_n(values.data() + k * stride, dim, key.begin());
-        at_position[key].push_back(k);
-      }
-    std::vector<long> source(nodes.size(), -1);
-    for (unsigned int i = 0; i < nodes.size(); ++i)
-      {
-        const auto there = at_position.find(key_of(nodes[i].position));
-        if (there == at_position.end())
-          continue;
-        double closest = -std::numeric_limits<double>::max();
-        for (const std::size_t k : there->second)
-          {
-            double alignment = 0;
-            for (unsigned int c = 0; with_sides && c < dim; ++c)
-              alignment += nodes[i].side[c] * values[k * stride + dim + c];
-            if (alignment > closest)
-              closest = alignment, source[i] = k;
-          }
+        double alignment = 0;
+        for (unsigned int c = 0; records.with_sides && c < dim; ++c)
+          alignment += side[c] * records.values[k * records.stride + dim + c];
+        if (alignment > closest)
+          closest = alignment, source = k;
       }
     return source;
+  }
+
+
+
+  template <int dim>
+  std::vector<long>
+  RigidImpactor<dim>::heirs_of(const Records &records) const
+  {
+    std::vector<long> source(nodes.size(), -1);
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      source[i] = closest_record(records, nodes[i].position, nodes[i].side);
+    return source;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::vector<long>>
+  RigidImpactor<dim>::places_of(const Records           &records,
+                                const std::vector<long> &source,
+                                const std::vector<Face> &old_faces) const
+  {
+    // The places one refinement adds vertices at: the centre of each old
+    // face and (3D) the midpoints of its edges (vertices 0-1, 2-3, 0-2 and
+    // 1-3 of a quadrilateral in deal.II's numbering).
+    struct Place
+    {
+      Point<dim>                x;
+      const Face               *face;
+      std::vector<unsigned int> members;
+    };
+    std::vector<Place> places;
+    for (const Face &face : old_faces)
+      {
+        std::vector<std::vector<unsigned int>> groups;
+        groups.emplace_back();
+        for (unsigned int v = 0; v < face.vertices.size(); ++v)
+          groups.back().push_back(v);
+        if (face.vertices.size() == 4)
+          groups.insert(groups.end(), {{0, 1}, {2, 3}, {0, 2}, {1, 3}});
+        for (const auto &members : groups)
+          {
+            Point<dim> x;
+            for (const unsigned int v : members)
+              x += face.vertices[v] / double(members.size());
+            places.push_back({x, &face, members});
+          }
+      }
+    std::sort(places.begin(), places.end(), [](const Place &a, const Place &b) {
+      return a.x[0] < b.x[0];
+    });
+    double size = 0;
+    for (const Face &face : old_faces)
+      size = std::max(size, face.size);
+    const double                   tolerance = 1e-9 * size;
+    std::vector<std::vector<long>> members(nodes.size());
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      {
+        if (source[i] >= 0)
+          continue;
+        const Point<dim> &x  = nodes[i].position;
+        auto              it = std::lower_bound(places.begin(),
+                                   places.end(),
+                                   x[0] - tolerance,
+                                   [](const Place &p, const double v) {
+                                     return p.x[0] < v;
+                                   });
+        // The place on the node's side (a crack's two faces share it).
+        const Place *best = nullptr;
+        for (; it != places.end() && it->x[0] <= x[0] + tolerance; ++it)
+          if (it->x.distance(x) <= tolerance
+              && it->face->side * nodes[i].side > 0
+              && (best == nullptr
+                  || it->face->side * nodes[i].side
+                       > best->face->side * nodes[i].side))
+            best = &*it;
+        if (best == nullptr)
+          continue;
+        for (const unsigned int v : best->members)
+          members[i].push_back(
+            closest_record(records, best->face->vertices[v], best->face->side));
+        if (std::find(members[i].begin(), members[i].end(), -1)
+            != members[i].end())
+          members[i].clear();
+      }
+    return members;
   }
 
 
@@ -717,8 +801,38 @@ namespace amfrac
 
   template <int dim>
   void
-  RigidImpactor<dim>::restore_history(const std::vector<double> &values,
-                                      const bool                 require_all)
+  RigidImpactor<dim>::carry(const Records           &records,
+                            const std::vector<long> &members,
+                            const unsigned int       i)
+  {
+    History     &h  = history[i];
+    const double kt = tangential_factor * nodes[i].stiffness;
+    const double n  = members.size();
+    for (const long k : members)
+      {
+        const double  *v = records.history_of(k);
+        Tensor<1, dim> force, stretch;
+        for (unsigned int c = 0; c < dim; ++c)
+          force[c] = v[c];
+        // stick_energy = |F|^2 / (2 k_t), so the spring's stretch is
+        // F / k_t = 2 stick_energy F / |F|^2.
+        const double squared = force.norm_square();
+        if (v[dim + 1] > 0 && squared > 0)
+          stretch = (2 * v[dim] / squared) * force;
+        h.force += (kt / n) * stretch;
+        for (unsigned int c = 0; c < dim; ++c)
+          h.displacement[c] += v[dim + 2 + c] / n;
+        h.in_contact = h.in_contact || v[dim + 1] > 0;
+      }
+    h.stick_energy = kt > 0 ? h.force.norm_square() / (2 * kt) : 0.;
+    h.referenced   = true;
+  }
+
+
+
+  template <int dim>
+  typename RigidImpactor<dim>::Records
+  RigidImpactor<dim>::parse_records(const std::vector<double> &values) const
   {
     const bool with_sides     = !values.empty() && values.back() == sides_tag;
     const unsigned int stride = with_sides ? 4 * dim + 2 : 3 * dim + 2;
@@ -726,14 +840,62 @@ namespace amfrac
     AssertThrow(values.size() >= tail && (values.size() - tail) % stride == 0,
                 ExcMessage("the checkpoint's impactor friction state has "
                            + std::to_string(values.size()) + " values"));
-    const std::size_t       n_saved = (values.size() - tail) / stride;
-    const std::vector<long> source
-      = heirs_of(values, n_saved, stride, with_sides);
-    const std::vector<double> shared = heirs_stiffness(source, n_saved);
-    // The history follows the position (and the side).
-    const unsigned int first = with_sides ? 2 * dim : dim;
+    Records records{values,
+                    with_sides,
+                    stride,
+                    with_sides ? 2u * dim : 1u * dim,
+                    (values.size() - tail) / stride,
+                    {}};
+    for (std::size_t k = 0; k < records.n_saved; ++k)
+      {
+        std::array<double, dim> key;
+        std::copy_n(values.data() + k * stride, dim, key.begin());
+        records.at_position[key].push_back(k);
+      }
+    return records;
+  }
+
+
+
+  template <int dim>
+  void
+  RigidImpactor<dim>::restore_history(const std::vector<double> &values,
+                                      const bool                 require_all,
+                                      const std::vector<Face>   &old_faces)
+  {
+    const Records           records = parse_records(values);
+    const std::vector<long> source  = heirs_of(records);
     history.assign(nodes.size(), History());
-    bool missing = false;
+    if (require_all)
+      restore_exactly(records, source);
+    else
+      {
+        // The history follows the position (and the side), as the stick
+        // springs' stretch; new nodes take the old face's where they lie.
+        const auto members = places_of(records, source, old_faces);
+        for (unsigned int i = 0; i < nodes.size(); ++i)
+          if (source[i] >= 0)
+            carry(records, {source[i]}, i);
+          else if (!members[i].empty())
+            carry(records, members[i], i);
+      }
+    trial_history      = history;
+    const double *rest = values.data() + records.n_saved * records.stride;
+    for (unsigned int c = 0; c < dim; ++c)
+      committed_center[c] = rest[c];
+    dissipation         = rest[dim];
+    pending_dissipation = 0;
+  }
+
+
+
+  template <int dim>
+  void
+  RigidImpactor<dim>::restore_exactly(const Records           &records,
+                                      const std::vector<long> &source)
+  {
+    const std::vector<double> shared = heirs_stiffness(source, records.n_saved);
+    bool                      missing = false;
     for (unsigned int i = 0; i < nodes.size(); ++i)
       {
         if (source[i] < 0)
@@ -741,36 +903,27 @@ namespace amfrac
             missing = true;
             continue;
           }
-        const double *v = values.data() + source[i] * stride + first;
-        // A node without area (none on hexahedra) takes no force.
-        const double share
-          = shared[source[i]] > 0 ? nodes[i].stiffness / shared[source[i]] : 0.;
-        History &h = history[i];
+        const double *v = records.history_of(source[i]);
+        History      &h = history[i];
         for (unsigned int c = 0; c < dim; ++c)
           {
-            h.force[c]        = share * v[c];
+            h.force[c]        = v[c];
             h.displacement[c] = v[dim + 2 + c];
           }
-        h.stick_energy = share * v[dim];
+        h.stick_energy = v[dim];
         h.in_contact   = v[dim + 1] > 0;
         h.referenced   = true;
       }
     // A record in contact that no node took (two copies closer to one
     // record than to the other at their point) would lose its force.
-    for (std::size_t k = 0; require_all && k < n_saved; ++k)
-      if (shared[k] == 0 && values[k * stride + first + dim + 1] > 0)
+    for (std::size_t k = 0; k < records.n_saved; ++k)
+      if (shared[k] == 0 && records.history_of(k)[dim + 1] > 0)
         missing = true;
     // On every rank alike, so that no rank goes on alone.
-    if (require_all && Utilities::MPI::max(missing ? 1 : 0, comm) > 0)
+    if (Utilities::MPI::max(missing ? 1 : 0, comm) > 0)
       throw InputError("Impactor/Friction coefficient",
                        "the checkpoint's friction history of the impactor "
                        "does not match this mesh's face node for node");
-    trial_history      = history;
-    const double *rest = values.data() + n_saved * stride;
-    for (unsigned int c = 0; c < dim; ++c)
-      committed_center[c] = rest[c];
-    dissipation         = rest[dim];
-    pending_dissipation = 0;
   }
 
 

@@ -606,7 +606,7 @@ namespace amfrac
     // The reactions of the converged state on the new numbering start the
     // trapezoidal rule of the external work of the step solved again.
     newton->converged_solution = converged;
-    // The new impactor (setup_newton() builds it on the regrouped copies)
+    // The impactor (setup_newton() sets it up on the regrouped copies)
     // placed at t_previous, so that the converged state's residual holds
     // its contact.
     if (impactor)

@@ -148,16 +148,13 @@ namespace amfrac
     if (parameters.impactor.active && !parameters.time.explicit_dynamics)
       {
         newton->contact_force.reinit(owned, comm);
-        // After a crack insertion: the friction history of the last
-        // converged step passes to the regrouped copies.
-        const std::vector<double> friction
-          = impactor && impactor->has_friction() ? impactor->friction_state() :
-                                                   std::vector<double>();
-        impactor
-          = std::make_unique<RigidImpactor<dim>>(parameters.impactor, comm);
+        // After a crack insertion or a mesh change the same impactor
+        // moves the friction history of the last converged step to the
+        // new nodes (RigidImpactor::setup()).
+        if (!impactor)
+          impactor
+            = std::make_unique<RigidImpactor<dim>>(parameters.impactor, comm);
         impactor->setup(dof_layer);
-        if (!friction.empty())
-          impactor->inherit_friction_state(friction);
       }
     newton->interface_force.reinit(owned, relevant, comm, true);
     if (plasticity)

@@ -9,6 +9,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <map>
 #include <memory>
 #include <string>
 #include <utility>
@@ -47,11 +48,18 @@ namespace amfrac
    * depends on the partition, and the copies of a node split by a crack
    * share a position but lie on opposite sides. A mesh change or a crack
    * insertion hands each new node the history of the old node at its
-   * position whose side is closest to its own; the heirs of one old node
-   * (the copies of a split node, whose areas add up to its area) share its
-   * tangential force and stick energy in proportion to their stiffness, so
-   * that the force on the sphere and the contact energy do not jump. A
-   * single heir (refinement keeps every vertex) takes them whole.
+   * position whose side is closest to its own, as the stretch of its
+   * stick spring (force / k_t): the heir's force is its own k_t times that
+   * stretch. The copies of a split node, whose areas add up to its area,
+   * so share its force and stick energy in proportion to their stiffness;
+   * an old vertex whose area refinement or coarsening changed keeps its
+   * stretch, not its force. A node that refinement adds at the midpoint of
+   * an old face's edge or at its centre takes the mean stretch (and
+   * displacement) of that face's vertices, on its side. A uniform stick
+   * field so keeps the force on the sphere, each node's force and the
+   * contact energy through any mesh change (checked). With quadratic
+   * elements the nodes refinement adds between an old vertex and an old
+   * edge's midpoint start without a spring.
    *
    * A guided sphere (the default) moves along the face's normal only: its
    * acceleration across it is held at zero (a drop-weight striker, and
@@ -73,7 +81,9 @@ namespace amfrac
     RigidImpactor(const parameters::Impactor &parameters, MPI_Comm comm);
 
     /** The candidate nodes of the current mesh: the owned nodes on the
-     * face, with their area. */
+     * face, with their area. After a mesh change or a crack insertion the
+     * friction history moves to the new nodes (see the class
+     * description). Collective. */
     void
     setup(const TiedCopyDoFs<dim> &dofs);
 
@@ -250,8 +260,10 @@ namespace amfrac
     set_friction_state(const std::vector<double> &values);
 
     /** Take over friction_state() of the impactor of the mesh before a
-     * crack insertion or a mesh change: the heirs of its nodes as in the
-     * class's description, new nodes start afresh. Collective. */
+     * crack insertion: the heirs of its nodes as in the class's
+     * description; a node at no old node's position starts afresh (the
+     * state does not know the old faces: a mesh change goes through
+     * setup() of the same impactor). Collective. */
     void
     inherit_friction_state(const std::vector<double> &values);
 
@@ -264,6 +276,17 @@ namespace amfrac
       /** Unit direction from the node into its face's cells (the mean of
        * their centres): which copy of a split node it is. */
       Tensor<1, dim> side;
+    };
+
+    /** A face of the laminate under the sphere: its vertices, the unit
+     * direction from its centre into its cell (which copy of a split face
+     * it is) and its diameter. Every rank keeps all faces (the
+     * triangulation is shared). */
+    struct Face
+    {
+      std::vector<Point<dim>> vertices;
+      Tensor<1, dim>          side;
+      double                  size;
     };
 
     /** What the friction of a node keeps from the last commit: its
@@ -286,19 +309,66 @@ namespace amfrac
 
     /** friction_state() into the history of the current nodes; a node it
      * does not name starts afresh, or, if @p require_all, throws on every
-     * rank. Collective. */
+     * rank. A checkpoint (@p require_all) restores each record as it was;
+     * otherwise the heirs take the records' stick stretch, and a node at the
+     * midpoint of an edge or at the centre of one of @p old_faces the mean
+     * of that face's vertices. Collective. */
     void
-    restore_history(const std::vector<double> &values, const bool require_all);
+    restore_history(const std::vector<double> &values,
+                    const bool                 require_all,
+                    const std::vector<Face>   &old_faces = {});
 
-    /** For each node, the index of the record among @p n_saved records
-     * (of @p stride values, led by position and side) of
-     * friction_state() whose history it takes: the one at its position
-     * with the closest side, or -1 if none is there. */
+    /** friction_state() parsed: its records (position, side, then the
+     * history: force, stick energy, contact flag, displacement; older
+     * checkpoints have no side) by position. */
+    struct Records
+    {
+      const std::vector<double>                                  &values;
+      bool                                                        with_sides;
+      unsigned int                                                stride, first;
+      std::size_t                                                 n_saved;
+      std::map<std::array<double, dim>, std::vector<std::size_t>> at_position;
+
+      const double *
+      history_of(const long k) const
+      {
+        return values.data() + k * stride + first;
+      }
+    };
+    Records
+    parse_records(const std::vector<double> &values) const;
+
+    /** The record at @p position whose side is closest to @p side, or -1
+     * if none is there. */
+    long
+    closest_record(const Records        &records,
+                   const Point<dim>     &position,
+                   const Tensor<1, dim> &side) const;
+
+    /** For each node, the record whose history it takes (closest_record()
+     * at its position and side), or -1. */
     std::vector<long>
-    heirs_of(const std::vector<double> &values,
-             const std::size_t          n_saved,
-             const unsigned int         stride,
-             const bool                 with_sides) const;
+    heirs_of(const Records &records) const;
+
+    /** For each node without a record (@p source -1): the records of the
+     * vertices of the face of @p old_faces at whose centre or edge
+     * midpoint it lies, on its side (empty if none). */
+    std::vector<std::vector<long>>
+    places_of(const Records           &records,
+              const std::vector<long> &source,
+              const std::vector<Face> &old_faces) const;
+
+    /** Node @p i takes the mean stretch, displacement and contact of the
+     * records @p members. */
+    void
+    carry(const Records           &records,
+          const std::vector<long> &members,
+          const unsigned int       i);
+
+    /** A checkpoint's records node for node (throws on every rank if a
+     * node or a record in contact is left over). Collective. */
+    void
+    restore_exactly(const Records &records, const std::vector<long> &source);
 
     /** The sum over the nodes of all ranks that take record k of their
      * stiffness, per record (added in a partition-independent order).
@@ -348,6 +418,7 @@ namespace amfrac
     unsigned int                   boundary_id, normal_axis;
     double                         inward; // -1 on a + face, +1 on a - face
     std::vector<Node>              nodes;
+    std::vector<Face>              faces;
     Tensor<1, dim>                 center, velocity, acceleration, force;
     /** A cylinder's unit axis (zero: a sphere, or the circle in 2D). */
     Tensor<1, dim> axis;
