@@ -34,8 +34,13 @@ if(STAGE STREQUAL "np1")
 elseif(STAGE STREQUAL "np2")
   set(ranks 2)
   file(REMOVE_RECURSE ${WORKDIR}/np2)
-  if(NOT EXISTS ${WORKDIR}/np1/output/history.csv)
-    message(FATAL_ERROR "no one-rank run in ${WORKDIR}/np1 (run its np1 stage)")
+  # Not a one-rank run of an older amfrac or scene (ctest -FS, or the
+  # script run by hand).
+  set(np1_history ${WORKDIR}/np1/output/history.csv)
+  if(NOT EXISTS ${np1_history} OR ${AMFRAC} IS_NEWER_THAN ${np1_history}
+      OR ${PRM} IS_NEWER_THAN ${np1_history})
+    message(FATAL_ERROR "no one-rank run in ${WORKDIR}/np1 newer than "
+      "amfrac and the scene (run its np1 stage)")
   endif()
 else()
   set(ranks 1 2)

@@ -154,11 +154,13 @@ namespace amfrac
         if (cell->at_boundary(f) && cell->face(f)->boundary_id() == boundary_id)
           {
             const auto face = cell->face(f);
-            Face       kept_face{{}, cell->center() - face->center(), 0};
-            kept_face.side /= kept_face.side.norm();
-            kept_face.size = face->diameter();
+            Face       kept_face{{}, {}, face->diameter()};
             for (const unsigned int v : face->vertex_indices())
-              kept_face.vertices.push_back(face->vertex(v));
+              {
+                kept_face.vertices.push_back(face->vertex(v));
+                const Tensor<1, dim> inward = cell->center() - face->vertex(v);
+                kept_face.sides.push_back(inward / inward.norm());
+              }
             faces.push_back(std::move(kept_face));
             dofs.get_dof_indices(cell, indices);
             face_values.reinit(cell, f);
@@ -712,6 +714,7 @@ namespace amfrac
     struct Place
     {
       Point<dim>                x;
+      Tensor<1, dim>            side;
       const Face               *face;
       std::vector<unsigned int> members;
     };
@@ -726,10 +729,16 @@ namespace amfrac
           groups.insert(groups.end(), {{0, 1}, {2, 3}, {0, 2}, {1, 3}});
         for (const auto &members : groups)
           {
-            Point<dim> x;
+            // The side of a place on a crack's edge (the two faces there
+            // share it) is that of its vertices' copies.
+            Point<dim>     x;
+            Tensor<1, dim> side;
             for (const unsigned int v : members)
-              x += face.vertices[v] / double(members.size());
-            places.push_back({x, &face, members});
+              {
+                x += face.vertices[v] / double(members.size());
+                side += face.sides[v];
+              }
+            places.push_back({x, side / side.norm(), &face, members});
           }
       }
     std::sort(places.begin(), places.end(), [](const Place &a, const Place &b) {
@@ -751,20 +760,20 @@ namespace amfrac
                                    [](const Place &p, const double v) {
                                      return p.x[0] < v;
                                    });
-        // The place on the node's side (a crack's two faces share it).
-        const Place *best = nullptr;
+        // The place on the node's side, and at each of its vertices the
+        // copy on the place's face's side.
+        const Tensor<1, dim> &side = nodes[i].side;
+        const Place          *best = nullptr;
         for (; it != places.end() && it->x[0] <= x[0] + tolerance; ++it)
-          if (it->x.distance(x) <= tolerance
-              && it->face->side * nodes[i].side > 0
-              && (best == nullptr
-                  || it->face->side * nodes[i].side
-                       > best->face->side * nodes[i].side))
+          if (it->x.distance(x) <= tolerance && it->side * side > 0
+              && (best == nullptr || it->side * side > best->side * side))
             best = &*it;
         if (best == nullptr)
           continue;
         for (const unsigned int v : best->members)
-          members[i].push_back(
-            closest_record(records, best->face->vertices[v], best->face->side));
+          members[i].push_back(closest_record(records,
+                                              best->face->vertices[v],
+                                              best->face->sides[v]));
         if (std::find(members[i].begin(), members[i].end(), -1)
             != members[i].end())
           members[i].clear();
@@ -905,12 +914,18 @@ namespace amfrac
           }
         const double *v = records.history_of(source[i]);
         History      &h = history[i];
+        // Node for node the share is 1 exactly; the copies of a split
+        // node in a checkpoint written before the sides were saved (they
+        // cannot be told apart) share their record by stiffness, and a
+        // node without area takes no force.
+        const double share
+          = shared[source[i]] > 0 ? nodes[i].stiffness / shared[source[i]] : 0.;
         for (unsigned int c = 0; c < dim; ++c)
           {
-            h.force[c]        = v[c];
+            h.force[c]        = share * v[c];
             h.displacement[c] = v[dim + 2 + c];
           }
-        h.stick_energy = v[dim];
+        h.stick_energy = share * v[dim];
         h.in_contact   = v[dim + 1] > 0;
         h.referenced   = true;
       }

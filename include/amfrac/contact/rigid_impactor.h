@@ -279,14 +279,14 @@ namespace amfrac
     };
 
     /** A face of the laminate under the sphere: its vertices, the unit
-     * direction from its centre into its cell (which copy of a split face
-     * it is) and its diameter. Every rank keeps all faces (the
-     * triangulation is shared). */
+     * direction from each vertex to its cell's centre (which copy of a
+     * split node the vertex is, as a node's side tells) and its diameter.
+     * Every rank keeps all faces (the triangulation is shared). */
     struct Face
     {
-      std::vector<Point<dim>> vertices;
-      Tensor<1, dim>          side;
-      double                  size;
+      std::vector<Point<dim>>     vertices;
+      std::vector<Tensor<1, dim>> sides;
+      double                      size;
     };
 
     /** What the friction of a node keeps from the last commit: its
