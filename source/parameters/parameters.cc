@@ -1618,20 +1618,25 @@ namespace amfrac
       impactor.parse_parameters(prm, dimension);
       check_impactor_input();
       check_arc_length_input();
+      // Contact between the bodies puts a static run on the Newton path.
+      contact.parse_parameters(prm, geometry.plies.size());
       // Only the Newton path counts its steps against the limit; a linear
       // or explicit run would silently ignore it.
       if (nonlinear_solver.max_steps > 0
           && (time.explicit_dynamics
               || (cohesive.interfaces.empty() && !cracks.active
-                  && !total_lagrangian && !plastic_plies && !impactor.active)))
+                  && !total_lagrangian && !plastic_plies && !impactor.active
+                  && !contact.active)))
         throw InputError("Nonlinear solver/Maximum steps",
                          "ends runs on the static Newton path (cohesive "
                          "interfaces, crack insertion, total Lagrangian "
-                         "kinematics, plastic plies or a prescribed "
-                         "impactor), and this run is not one: shorten "
-                         "Time/End time instead");
+                         "kinematics, plastic plies, a prescribed "
+                         "impactor or contact between the bodies), and "
+                         "this run is not one: shorten Time/End time "
+                         "instead");
       if (adaptivity.during_history() && cohesive.interfaces.empty()
-          && ((!cracks.active && !time.explicit_dynamics && !plastic_plies)
+          && ((!cracks.active && !time.explicit_dynamics && !plastic_plies
+               && !contact.active)
               || adaptivity.process_zone_elements > 0))
         throw InputError(
           adaptivity.process_zone_elements > 0 ?
@@ -1639,9 +1644,10 @@ namespace amfrac
           adaptivity.refine_every > 0 ? "Adaptivity/Refine every" :
                                         "Adaptivity/Error threshold",
           "refinement during a load history is for explicit runs and for "
-          "scenes with cohesive interfaces, crack insertion or plastic "
-          "plies (the process-zone rule for scenes with cohesive "
-          "interfaces); a linear static scene adapts by Refinement cycles");
+          "scenes with cohesive interfaces, crack insertion, plastic "
+          "plies or contact between the bodies (the process-zone rule for "
+          "scenes with cohesive interfaces); a linear static scene adapts "
+          "by Refinement cycles");
       if (dimension == 2 && adaptivity.process_zone_axes == 2)
         throw InputError("Adaptivity/Process zone directions",
                          "y is the thickness of a 2D laminate; the process-"
@@ -1664,7 +1670,6 @@ namespace amfrac
                          "history (cohesive interfaces) can");
       if (time.explicit_dynamics)
         check_explicit_adaptivity_input();
-      contact.parse_parameters(prm, geometry.plies.size());
       check_contact_input();
       check_plasticity_input();
       check_prism_input();
@@ -1822,12 +1827,6 @@ namespace amfrac
               "Adaptivity/Refinement cycles",
               "the contact surfaces are those of the initial mesh in a "
               "static run; set Refinement cycles = 0 with Contact/Enable");
-      require(!adaptivity.during_history(),
-              "Contact/Enable",
-              "a static run's contact surfaces and their friction "
-              "history are those of the initial mesh; contact between the "
-              "bodies adapts with the mesh in explicit runs only: switch "
-              "Refine every, Error threshold and Process zone elements off");
     }
 
 

@@ -238,9 +238,12 @@ namespace amfrac
       TimerOutput::Scope scope(timer, "refine and transfer");
       if (interfaces)
         before = interfaces->ledger(comm);
+      // The contact's energy is that of the converged state (the last
+      // row's evaluation, committed).
       const double stored_before
         = bulk_strain_energy(newton->converged_solution)
-          + total(before, &Ledger::work);
+          + total(before, &Ledger::work)
+          + (body_contact ? body_contact->contact_energy() : 0.);
       typename CohesiveInterfaces<dim>::Snapshot snapshot;
       if (interfaces)
         snapshot = interfaces->snapshot(comm);
@@ -266,7 +269,7 @@ namespace amfrac
         }
 
       // A new Newton state on the new mesh (with the run's totals).
-      setup_newton();
+      setup_newton(true);
       if (parameters.nonlinear_solver.dissipation_control)
         setup_load_pattern(false, "dissipation or opening control");
       newton->settling = true;
@@ -284,14 +287,22 @@ namespace amfrac
       assembler.assemble_load(loads, t, newton->external_load);
       as_transferred = true;
       update_residual(solution, nullptr);
-      as_transferred            = false;
+      as_transferred = false;
+      // The stick springs carried by place become forces of the new
+      // nodes' stiffness at the transferred state, which the next step's
+      // slips start from (the tangent knows forces, not stretches); what
+      // the springs' energy changed by is the mesh change's.
+      if (body_contact)
+        body_contact->commit();
       newton->previous_residual = newton->residual;
       newton->previous_load     = newton->external_load;
       newton->converged_force   = load_force(newton->residual);
       if (interfaces)
         after = interfaces->ledger(comm);
-      newton->remeshing_energy += bulk_strain_energy(solution)
-                                  + total(after, &Ledger::work) - stored_before;
+      newton->remeshing_energy
+        += bulk_strain_energy(solution) + total(after, &Ledger::work)
+           + (body_contact ? body_contact->contact_energy() : 0.)
+           - stored_before;
     }
     if (!cycle_summary)
       cycle_summary = std::make_unique<History>(

@@ -90,7 +90,7 @@ namespace amfrac
 
   template <int dim>
   void
-  Simulator<dim>::setup_newton()
+  Simulator<dim>::setup_newton(const bool mesh_change)
   {
     TimerOutput::Scope scope(timer, "setup Newton");
     // A new state for a new mesh or numbering keeps the run's totals.
@@ -120,7 +120,7 @@ namespace amfrac
     const IndexSet &owned    = dof_layer.locally_owned_dofs();
     const IndexSet &relevant = dof_layer.locally_relevant_dofs();
     if (parameters.contact.active)
-      setup_static_contact();
+      setup_static_contact(mesh_change);
     build_newton_matrix(Vector(owned, comm));
     AffineConstraints<double> none;
     none.close();
@@ -169,13 +169,16 @@ namespace amfrac
 
   template <int dim>
   void
-  Simulator<dim>::setup_static_contact()
+  Simulator<dim>::setup_static_contact(const bool mesh_change)
   {
     if (!body_contact)
       body_contact
         = std::make_unique<BodyContact<dim>>(parameters.contact, comm);
     body_contact->set_static();
-    body_contact->setup(dof_layer, released_faces(), paired_faces());
+    body_contact->setup(dof_layer,
+                        released_faces(),
+                        paired_faces(),
+                        mesh_change);
   }
 
 

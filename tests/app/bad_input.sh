@@ -595,12 +595,9 @@ $contact
 subsection Discretization
   set Finite element degree = 2
 end"
-expect contact_static_adaptive "Contact/Enable" "$static_contact
-subsection Cohesive interfaces
-  set Interfaces = 1
-end
+expect contact_static_cycles "Adaptivity/Refinement cycles" "$static_contact
 subsection Adaptivity
-  set Refine every = 1
+  set Refinement cycles = 2
 end"
 expect contact_unbonded_in_plane "Contact/Unbonded interfaces" "$(with 'set Dimension = 3' 'set Dimension = 2')
 $explicit

@@ -914,12 +914,15 @@ namespace amfrac
      * last residual evaluation (total Lagrangian, which evaluated u). */
     double
     bulk_strain_energy(const Vector &u) const;
+    /** The Newton state on the current mesh; after a @p mesh_change the
+     * contact between the bodies carries its stick springs by place. */
     void
-    setup_newton();
+    setup_newton(const bool mesh_change = false);
     /** Static contact between the bodies: the surface of the current
-     * mesh (hanging nodes on it are an input error). */
+     * mesh; after a @p mesh_change the stick springs of the old one move
+     * to it by place (BodyContact::setup()). */
     void
-    setup_static_contact();
+    setup_static_contact(const bool mesh_change);
     /** The Newton matrix's pattern (the contact pairs found at @p u) and
      * the condensed bulk; the solver starts afresh. */
     void
