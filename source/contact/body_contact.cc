@@ -137,8 +137,12 @@ namespace amfrac
   {
     // The places the old surface knows a stretch at: its nodes, and the
     // midpoints of its faces' edges and its faces' centres (the vertices
-    // one refinement adds), each with its side (outward normal) and
-    // whether some node there was in contact.
+    // one refinement adds), each with its side and whether some node there
+    // was in contact. A mean's side is that of its members (their
+    // outward normals, unit(area_penalty)), not its face's normal: the
+    // side faces of two stacked bodies (or of a crack's two sides) lie in
+    // one plane with one normal, and an edge midpoint on their common
+    // edge would tie between the bodies.
     struct Place
     {
       Point<dim>     x;
@@ -152,15 +156,17 @@ namespace amfrac
       const double norm = v.norm();
       return norm > 0 ? v / norm : v;
     };
-    const auto add_mean = [&](const std::vector<unsigned int> &members,
-                              const Tensor<1, dim>            &side) {
-      Place place{Point<dim>(), side, Tensor<1, dim>(), false, false};
+    const auto add_mean = [&](const std::vector<unsigned int> &members) {
+      Place place{
+        Point<dim>(), Tensor<1, dim>(), Tensor<1, dim>(), false, false};
       for (const unsigned int i : members)
         {
+          place.side += unit(old_nodes[i].area_penalty);
           place.x += old_nodes[i].reference / double(members.size());
           place.stretch += stretch_of(old_history[i]) / double(members.size());
           place.in_contact = place.in_contact || old_history[i].in_contact;
         }
+      place.side = unit(place.side);
       places.push_back(place);
     };
     for (unsigned int i = 0; i < old_nodes.size(); ++i)
@@ -171,11 +177,7 @@ namespace amfrac
                         true});
     for (const Face &face : old_faces)
       {
-        std::array<Point<dim>, n_face_vertices> vertices;
-        for (unsigned int v = 0; v < n_face_vertices; ++v)
-          vertices[v] = old_nodes[face.nodes[v]].reference;
-        const Tensor<1, dim> side = face.sign * normal(vertices, face_middle());
-        add_mean({face.nodes.begin(), face.nodes.end()}, side);
+        add_mean({face.nodes.begin(), face.nodes.end()});
         if constexpr (dim == 3)
           // The edges of a quadrilateral face: vertices 0-1, 2-3, 0-2, 1-3
           // in deal.II's numbering.
@@ -184,16 +186,19 @@ namespace amfrac
                 {2, 3},
                 {0, 2},
                 {1, 3}})
-            add_mean({face.nodes[a], face.nodes[b]}, side);
+            add_mean({face.nodes[a], face.nodes[b]});
       }
     const auto closer
       = [](const Place &a, const Place &b, const Tensor<1, dim> &side) {
           const double da = a.side * side, db = b.side * side;
           return da > db + 1e-12 || (da > db - 1e-12 && a.node && !b.node);
         };
-    std::sort(places.begin(), places.end(), [](const Place &a, const Place &b) {
-      return a.x[0] < b.x[0];
-    });
+    // Stable: places at one x keep the order above, on every rank.
+    std::stable_sort(places.begin(),
+                     places.end(),
+                     [](const Place &a, const Place &b) {
+                       return a.x[0] < b.x[0];
+                     });
     // Each new node: the places within round-off of it, the closest side,
     // an old node before a mean.
     double size = 0;

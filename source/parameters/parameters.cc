@@ -1827,6 +1827,12 @@ namespace amfrac
               "Adaptivity/Refinement cycles",
               "the contact surfaces are those of the initial mesh in a "
               "static run; set Refinement cycles = 0 with Contact/Enable");
+      require(!total_lagrangian || !adaptivity.during_history(),
+              "Contact/Enable",
+              "contact between the bodies on a mesh that adapts during a "
+              "static run has been tested with small-strain kinematics "
+              "only: switch Refine every, Error threshold and Process "
+              "zone elements off with Kinematics = total Lagrangian");
     }
 
 

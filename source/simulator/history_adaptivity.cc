@@ -234,12 +234,23 @@ namespace amfrac
     typename CohesiveInterfaces<dim>::TransferReport report;
     std::vector<Ledger>                              before, after;
     double kappa_before = 0, kappa_after = 0;
+    // The friction force (sum over the contact pairs) of the converged
+    // state and of the transferred one: the stick springs carried.
+    double     friction_before = 0, friction_after = 0;
+    const auto friction_force = [this]() {
+      for (const auto &[name, value] : body_contact->columns())
+        if (name == "body_contact_friction_force")
+          return value;
+      return 0.;
+    };
     {
       TimerOutput::Scope scope(timer, "refine and transfer");
       if (interfaces)
         before = interfaces->ledger(comm);
       // The contact's energy is that of the converged state (the last
       // row's evaluation, committed).
+      if (body_contact)
+        friction_before = friction_force();
       const double stored_before
         = bulk_strain_energy(newton->converged_solution)
           + total(before, &Ledger::work)
@@ -293,7 +304,10 @@ namespace amfrac
       // slips start from (the tangent knows forces, not stretches); what
       // the springs' energy changed by is the mesh change's.
       if (body_contact)
-        body_contact->commit();
+        {
+          body_contact->commit();
+          friction_after = friction_force();
+        }
       newton->previous_residual = newton->residual;
       newton->previous_load     = newton->external_load;
       newton->converged_force   = load_force(newton->residual);
@@ -326,6 +340,11 @@ namespace amfrac
                              kappa_before);
         columns.emplace_back("max_equivalent_plastic_strain_after",
                              kappa_after);
+      }
+    if (body_contact)
+      {
+        columns.emplace_back("body_contact_friction_before", friction_before);
+        columns.emplace_back("body_contact_friction_after", friction_after);
       }
     columns.emplace_back("remeshing_energy", newton->remeshing_energy);
     cycle_summary->add_row(columns);

@@ -595,9 +595,10 @@ $contact
 subsection Discretization
   set Finite element degree = 2
 end"
-expect contact_static_cycles "Adaptivity/Refinement cycles" "$static_contact
+expect contact_static_finite_strain_adaptive "Contact/Enable" "$static_contact
+set Kinematics = total Lagrangian
 subsection Adaptivity
-  set Refinement cycles = 2
+  set Refine every = 1
 end"
 expect contact_unbonded_in_plane "Contact/Unbonded interfaces" "$(with 'set Dimension = 3' 'set Dimension = 2')
 $explicit

@@ -43,9 +43,14 @@
 //   change), so nothing is dissipated (1e-9 of the work; measured
 //   1.3e-10, and 2.5e-5 with the springs inherited by node instead) and
 //   the balance with the mesh changes' term closes (2e-6; measured
-//   4.9e-7, and 2.4e-5 inherited by node); the blocks stick (friction
-//   below mu N / 2) and the shear reaction is within 3 % of the fixed
-//   mesh's (measured -1.2 %: the refined blocks are softer in shear);
+//   4.9e-7, and 2.4e-5 inherited by node); each change keeps the friction
+//   force (the sum over the pairs, adaptivity.csv) at the transferred
+//   state within 25 % (measured 16 %: the two passes on mismatched faces
+//   share it differently on each mesh; springs dropped at the change:
+//   100 %, which the dissipation and the balance do not see); the blocks
+//   stick (friction below mu N / 2) and the shear reaction is within 3 %
+//   of the fixed mesh's (measured -1.2 %: the refined blocks are softer
+//   in shear);
 // - stack: prm/contact_stack_2d.prm: two unbonded plies as a cantilever
 //   under a pressure q: they deflect together (tips within 1e-3) as much
 //   as a single ply of the same mesh under q / 2 (1e-3), more than 3.5 times
@@ -347,7 +352,28 @@ namespace
               << " of the work, remeshing "
               << h.value(last, "remeshing_energy") / work << ", balance "
               << relative_balance(h) << std::endl;
-    CHECK(changes && changes->n_rows() >= 3 && cells > 16);
+    // Each mesh change keeps the friction force of the converged state
+    // (sum over the pairs) at the transferred one.
+    double worst_change = 0, sheared = 0;
+    for (std::size_t r = 0; changes && r < changes->n_rows(); ++r)
+      {
+        const double before = changes->value(r, "body_contact_friction_before");
+        const double after  = changes->value(r, "body_contact_friction_after");
+        std::cout << "  change at t = " << changes->value(r, "t")
+                  << ": friction " << before << " -> " << after << std::endl;
+        worst_change = std::max(worst_change, std::abs(after / before - 1));
+        if (changes->value(r, "t") > 1)
+          sheared = before;
+      }
+    const double initial_cells = fixed->dofs()
+                                   .copy_handler()
+                                   .get_triangulation()
+                                   .n_global_active_cells();
+    std::cout << "  " << initial_cells << " cells before; friction kept to "
+              << worst_change << " through the changes" << std::endl;
+    CHECK(changes && changes->n_rows() >= 3 && cells > initial_cells);
+    CHECK(sheared > 0);
+    CHECK(worst_change < 0.25);
     CHECK(h.value(last, "body_contact_friction_force")
           < 0.5 * mu * h.value(last, "body_contact_normal_force"));
     CHECK(on_fixed < 0);

@@ -17,7 +17,9 @@
 // pressed state), the upper block then slid by 1e-5 mm (every node sticks)
 // or 1e-3 mm (every node slips): 1e-8 too. check_split(): a crack
 // insertion splitting nodes in contact keeps their friction (see there);
-// check_mesh_change(): so do refinement and coarsening (see there).
+// check_mesh_change(): so do refinement and coarsening (see there), and
+// each node's force is that of a surface set up on the new mesh and moved
+// the same way (1e-12).
 #include "../check.h"
 
 #include <amfrac/contact/body_contact.h>
@@ -360,6 +362,19 @@ namespace
         TrilinosVector       after_force(u);
         contact.evaluate(u, after_force);
         const auto after = contact.columns();
+        // Node by node, with signs: a surface set up on this mesh and moved
+        // the same way (a spring taken from the other body would be
+        // reversed, which the sums above do not see).
+        BodyContact<dim> fresh(contact_parameters(0.3), MPI_COMM_WORLD);
+        fresh.setup(dofs, middle, {});
+        TrilinosVector fresh_force(u);
+        fresh.evaluate(at(3e-4, 0), fresh_force);
+        fresh.evaluate(u, fresh_force);
+        TrilinosVector difference = after_force;
+        difference -= fresh_force;
+        std::cout << "  |force - fresh| " << difference.linfty_norm() << " of "
+                  << fresh_force.linfty_norm() << std::endl;
+        CHECK(difference.linfty_norm() < 1e-12 * fresh_force.linfty_norm());
         std::cout << dim << "D " << (refine ? "refined" : "coarsened") << ": "
                   << before[0].second << " -> " << after[0].second
                   << " nodes in contact, friction force " << before[2].second

@@ -286,7 +286,8 @@ namespace amfrac
      * face's vertices at the midpoint of one of its edges or at its
      * centre (the new vertices refinement makes on flat faces; a vertex a
      * curved manifold moves off them starts without a spring); the place
-     * whose outward normal is closest to the node's wins (an old node on
+     * whose side (an old node's outward normal, a mean's the normalized
+     * sum of its members') is closest to the node's wins (an old node on
      * a tie), and only on the node's side. The stretch times the new
      * stiffness keeps the friction force and the stick energy of a
      * uniform stick field; what changes (also where the new cone is
