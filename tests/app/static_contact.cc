@@ -33,7 +33,14 @@
 //   friction tangent the first sliding step does not converge);
 // - stick: 1e-5 per unit t: the friction force stays below mu N and is
 //   the support's reaction (1e-3), nothing is dissipated (1e-12 of the
-//   work), balance 1e-8 of the work (measured 1.9e-9);
+//   work), balance 1e-8 of the work (measured 1.9e-9), at most 3 Newton
+//   iterations per step;
+// - stick_refined: the same on blocks refined twice (8 x 8 x 4 cells
+//   each): slave nodes lie on the common edges of the faces they press
+//   into, 1e-16 past one face or the other; counting that as a passed
+//   edge made Newton cycle between two faces at a residual of 1e-7 of
+//   the force until the step was cut to its minimum (t = 1.095); now one
+//   iteration per sheared step;
 // - stick_adaptive: the stick case with the top block's corner column
 //   refined once (on the uniform mesh the pressed state is exact and the
 //   estimate's marks would be round-off), on a mesh that the estimator
@@ -63,7 +70,7 @@
 //   (tests/app/contact_hanging.prm), so that its contact surface has
 //   hanging nodes; see hanging().
 // usage: app_static_contact blocks|blocks_2d|shifted|friction|stick|
-//        stick_adaptive|stack
+//        stick_adaptive|stick_refined|stack
 //        SCENE.prm WORKDIR
 //        app_static_contact stack_cracks|hanging SCENE.prm APPENDED.prm
 //        WORKDIR
@@ -295,11 +302,13 @@ namespace
   }
 
   void
-  stick(const std::string &scene, const std::string &workdir)
+  stick(const std::string &scene,
+        const std::string &workdir,
+        const std::string &more = "")
   {
     const double mu = 0.3;
     const auto   simulator
-      = amfrac_test::run_scene<3>(scene, sliding(1e-5, workdir));
+      = amfrac_test::run_scene<3>(scene, sliding(1e-5, workdir) + more);
     const History    &h        = simulator->history();
     const std::size_t last     = h.n_rows() - 1;
     const double      friction = h.value(last, "body_contact_friction_force");
@@ -307,12 +316,15 @@ namespace
     std::cout << "stick: friction " << friction << " of mu N " << mu * normal
               << ", reaction " << h.value(last, "reaction_z-_x")
               << ", dissipated " << largest(h, "friction_dissipation")
-              << ", balance " << relative_balance(h) << std::endl;
+              << ", balance " << relative_balance(h) << ", Newton iterations "
+              << largest(h, "newton_iterations") << " per step at most"
+              << std::endl;
     CHECK(friction > 0 && friction < 0.5 * mu * normal);
     CHECK_RELATIVE(std::abs(h.value(last, "reaction_z-_x")), friction, 1e-3);
     CHECK(largest(h, "friction_dissipation")
           < 1e-12 * h.value(last, "external_work"));
     CHECK(relative_balance(h) < 1e-8);
+    CHECK(largest(h, "newton_iterations") <= 3);
   }
 
   /** The stick case on the fixed mesh and on a mesh adapted after
@@ -521,6 +533,13 @@ main(int argc, char **argv)
     stick(scene, workdir);
   else if (which == "stick_adaptive")
     stick_adaptive(scene, workdir);
+  else if (which == "stick_refined")
+    // Matching meshes refined twice: slave nodes lie on the common edges
+    // of the faces they press into.
+    stick(scene,
+          workdir,
+          "subsection Geometry\n  set Refinement region = 1\n"
+          "  set Region refinements = 2\nend\n");
   else if (which == "stack")
     stack(scene, workdir);
   else if (which == "stack_cracks")
