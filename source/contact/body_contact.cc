@@ -677,13 +677,15 @@ namespace amfrac
       {
         if (!(xi[d] > -inside && xi[d] < 1 + inside))
           return false;
-        // Past an edge only beyond round-off: a node on the common edge
-        // of two faces (matching meshes) is 1e-16 past one of them or the
-        // other from one iterate to the next, and a face it passed would
-        // lose to a neighbour it does not lie on (Newton then cycled
-        // between the two at a residual of 1e-7 of the force).
-        past_edge[d] = xi[d] < -1e-10 || xi[d] > 1 + 1e-10;
-        if (clamped && past_edge[d])
+        past_edge[d] = xi[d] < 0 || xi[d] > 1;
+        // For the search's tie-break a face counts as passed only beyond
+        // round-off: a node on the common edge of two faces (matching
+        // meshes) is 1e-16 past one of them or the other from one iterate
+        // to the next, and a face it "passed" would lose to a neighbour it
+        // does not lie on (Newton then cycled between the two at a
+        // residual of 1e-7 of the force). The geometry keeps the exact
+        // rule, which the tangent differentiates.
+        if (clamped && (xi[d] < -1e-10 || xi[d] > 1 + 1e-10))
           *clamped = true;
         xi[d] = std::clamp(xi[d], 0., 1.);
       }

@@ -35,12 +35,12 @@
 //   the support's reaction (1e-3), nothing is dissipated (1e-12 of the
 //   work), balance 1e-8 of the work (measured 1.9e-9), at most 3 Newton
 //   iterations per step;
-// - stick_refined: the same on blocks refined twice (8 x 8 x 4 cells
+// - stick_refined: the same on blocks refined twice (8 x 8 x 8 cells
 //   each): slave nodes lie on the common edges of the faces they press
 //   into, 1e-16 past one face or the other; counting that as a passed
-//   edge made Newton cycle between two faces at a residual of 1e-7 of
-//   the force until the step was cut to its minimum (t = 1.095); now one
-//   iteration per sheared step;
+//   edge in the search made Newton cycle between two faces at a residual
+//   of 1e-7 of the force until the step was cut to its minimum (t =
+//   1.095); now at most 3 iterations per step (measured 2);
 // - stick_adaptive: the stick case with the top block's corner column
 //   refined once (on the uniform mesh the pressed state is exact and the
 //   estimate's marks would be round-off), on a mesh that the estimator
