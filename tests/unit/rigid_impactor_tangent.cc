@@ -162,14 +162,21 @@ namespace
     return u;
   }
 
+  /** The friction column @p column of the last evaluate() (-1 if none). */
+  double
+  friction_column(const RigidImpactor<3> &sphere, const std::string &column)
+  {
+    for (const auto &[name, value] : sphere.friction_columns())
+      if (name == column)
+        return value;
+    return -1;
+  }
+
   /** The sum of the nodes' friction forces of the last evaluate(). */
   double
   friction_sum(const RigidImpactor<3> &sphere)
   {
-    for (const auto &[name, value] : sphere.friction_columns())
-      if (name == "friction_force_sum")
-        return value;
-    return -1;
+    return friction_column(sphere, "friction_force_sum");
   }
 
   /** The friction history of the intact layer handed to the cracked one. */
@@ -372,10 +379,7 @@ namespace
   double
   friction_dissipation(const RigidImpactor<3> &sphere)
   {
-    for (const auto &[name, value] : sphere.friction_columns())
-      if (name == "impactor_friction_dissipation")
-        return value;
-    return -1.;
+    return friction_column(sphere, "impactor_friction_dissipation");
   }
 
   /** @p carried (its history moved through mesh changes) against an
