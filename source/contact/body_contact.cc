@@ -995,19 +995,23 @@ namespace amfrac
             f += trial;
           }
         next.in_contact     = true;
+        next.face           = pair.face;
+        next.xi             = pair.xi;
         updated[pair.slave] = next;
         add_to_owned(entries, pair.slave, f);
         for (unsigned int a = 0; a < n_face_vertices; ++a)
           add_to_owned(entries, face.nodes[a], -N[a] * f);
       }
-    // The nodes that left contact lose their friction history; touching
-    // is all false between the calls.
+    // The nodes that left contact lose their friction history (its
+    // spring's energy and, as for a pair whose force falls to zero, the
+    // mean of the old force and none along the step's slip on the face it
+    // touched); touching is all false between the calls.
     for (const Pair &pair : pairs)
       touching[pair.slave] = true;
     for (const unsigned int s : last_slaves)
       if (!touching[s])
         {
-          dissipated += history[s].stick_energy;
+          dissipated += history[s].stick_energy + leaving_work(s);
           updated[s] = History();
         }
     for (const Pair &pair : pairs)
@@ -1027,6 +1031,27 @@ namespace amfrac
       }
     ++n_evaluations;
     evaluate_seconds += seconds_since(start);
+  }
+
+
+
+  template <int dim>
+  double
+  BodyContact<dim>::leaving_work(const unsigned int s) const
+  {
+    const History &h = history[s];
+    if (friction_coefficient == 0 || !h.in_contact || h.carried
+        || h.face == numbers::invalid_unsigned_int)
+      return 0;
+    const auto     N    = shape_values(h.xi);
+    Tensor<1, dim> slip = displacements[s] - previous[s];
+    for (unsigned int a = 0; a < n_face_vertices; ++a)
+      {
+        const unsigned int v = faces[h.face].nodes[a];
+        slip -= N[a] * (displacements[v] - previous[v]);
+      }
+    // The old force is tangential to the old face; it opposes the slip.
+    return -0.5 * (h.friction * slip);
   }
 
 
@@ -1508,10 +1533,12 @@ namespace amfrac
   std::vector<double>
   BodyContact<dim>::state() const
   {
-    // Layout 2: the last displacements (layout 1, without the entry,
-    // had positions; restoring those through a difference would round the
-    // slip of the next step).
-    std::vector<double> values{dissipation, double(nodes.size()), 2.};
+    // Layout 3: the face and point each node touched (for the friction
+    // work of the step in which it leaves; layout 2 had none), the last
+    // displacements (layout 1, without the entry, had positions;
+    // restoring those through a difference would round the slip of the
+    // next step).
+    std::vector<double> values{dissipation, double(nodes.size()), 3.};
     for (std::size_t i = 0; i < nodes.size(); ++i)
       {
         // A mesh change is followed by an evaluation before any output
@@ -1525,6 +1552,11 @@ namespace amfrac
         values.push_back(history[i].in_contact ? 1 : 0);
         for (unsigned int d = 0; d < dim; ++d)
           values.push_back(previous[i][d]);
+        values.push_back(history[i].face == numbers::invalid_unsigned_int ?
+                           -1. :
+                           double(history[i].face));
+        for (unsigned int d = 0; d < dim - 1; ++d)
+          values.push_back(history[i].xi[d]);
       }
     return values;
   }
@@ -1535,9 +1567,10 @@ namespace amfrac
   void
   BodyContact<dim>::set_state(const std::vector<double> &values)
   {
-    constexpr unsigned int stride = 2 * dim + 2;
+    const unsigned int layout = values.size() >= 3 ? values[2] : 0;
+    const unsigned int stride = layout == 3 ? 3 * dim + 2 : 2 * dim + 2;
     AssertThrow(values.size() >= 3 && values[1] == nodes.size()
-                  && values[2] == 2.
+                  && (layout == 2 || layout == 3)
                   && values.size() == 3 + stride * nodes.size(),
                 ExcMessage("the checkpoint's contact state does not match "
                            "the surface of this mesh ("
@@ -1553,6 +1586,16 @@ namespace amfrac
         history[i].in_contact   = v[dim + 1] != 0;
         for (unsigned int d = 0; d < dim; ++d)
           previous[i][d] = v[dim + 2 + d];
+        history[i].face = numbers::invalid_unsigned_int;
+        if (layout == 3 && v[2 * dim + 2] >= 0)
+          {
+            AssertThrow(v[2 * dim + 2] < faces.size(),
+                        ExcMessage("the checkpoint's contact state names a "
+                                   "face this surface does not have"));
+            history[i].face = static_cast<unsigned int>(v[2 * dim + 2]);
+            for (unsigned int d = 0; d < dim - 1; ++d)
+              history[i].xi[d] = v[2 * dim + 3 + d];
+          }
         fresh[i] = false;
       }
     collect_slaves();

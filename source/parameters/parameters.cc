@@ -1617,9 +1617,10 @@ namespace amfrac
       // reason.
       impactor.parse_parameters(prm, dimension);
       check_impactor_input();
-      check_arc_length_input();
-      // Contact between the bodies puts a static run on the Newton path.
+      // Contact between the bodies puts a static run on the Newton path
+      // (and makes a scene nonlinear for arc-length).
       contact.parse_parameters(prm, geometry.plies.size());
+      check_arc_length_input();
       // Only the Newton path counts its steps against the limit; a linear
       // or explicit run would silently ignore it.
       if (nonlinear_solver.max_steps > 0
@@ -1814,11 +1815,15 @@ namespace amfrac
     Parameters::check_static_contact_input() const
     {
       // What the static path does not evaluate with contact yet.
-      require(!nonlinear_solver.arc_length
-                && !nonlinear_solver.dissipation_control,
+      // The dissipated energy of a step, (P0 t - P t0) / 2, holds for
+      // secant (unload-to-origin) laws only: the contact's stored energy
+      // and its friction are neither.
+      require(!nonlinear_solver.dissipation_control,
               "Nonlinear solver/Control",
-              "path following has not been tested with contact between "
-              "the bodies; use Control = displacement with Contact/Enable");
+              "dissipation or opening control measures the energy of a "
+              "step as that of secant laws, which contact between the "
+              "bodies and its friction are not; use Control = displacement "
+              "or arc-length with Contact/Enable");
       require(!buckling.active() && geometry.imperfection_mode == 0,
               "Buckling/Number of modes",
               "a linear buckling analysis does not include the contact "
@@ -1933,12 +1938,13 @@ namespace amfrac
         throw InputError(name,
                          "arc-length follows a static equilibrium path: it "
                          "needs Time/Time integration = static");
-      if (!total_lagrangian && cohesive.interfaces.empty() && !plastic_plies)
+      if (!total_lagrangian && cohesive.interfaces.empty() && !plastic_plies
+          && !contact.active)
         throw InputError(name,
                          "arc-length follows a nonlinear path, and this "
                          "scene is linear: set Kinematics = total "
-                         "Lagrangian, make interfaces cohesive or plies "
-                         "plastic");
+                         "Lagrangian, make interfaces cohesive, plies "
+                         "plastic or enable Contact");
       if (adaptivity.during_history())
         throw InputError(name,
                          "arc-length with refinement during the load "

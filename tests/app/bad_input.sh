@@ -554,12 +554,12 @@ subsection Boundary conditions
   end
 end
 $contact"
-expect contact_static_arc_length "Nonlinear solver/Control" "$static_contact
+expect contact_static_dissipation "Nonlinear solver/Control" "$static_contact
 subsection Cohesive interfaces
   set Interfaces = 1
 end
 subsection Nonlinear solver
-  set Control = arc-length
+  set Control = dissipation
 end"
 expect contact_static_buckling "Buckling/Number of modes" "$static_contact
 subsection Buckling

@@ -31,6 +31,7 @@
 //   slide, mu N s / 2 (measured 2.4e-7 of 5.9e-3); at most 5 Newton
 //   iterations per step (measured 4 per sliding step; without the
 //   friction tangent the first sliding step does not converge);
+// - slide_far: see slide_far();
 // - stick: 1e-5 per unit t: the friction force stays below mu N and is
 //   the support's reaction (1e-3), nothing is dissipated (1e-12 of the
 //   work), balance 1e-8 of the work (measured 1.9e-9), at most 3 Newton
@@ -64,13 +65,17 @@
 //   the bonded pair (beam theory: 4, less with shear and the Q1 mesh),
 //   the contact carries q L / 2 less what the clamp takes at the root
 //   (within 5 %), at most 4 Newton iterations per step, balance 1e-4;
+// - stack_arc_length: the stack on an arc-length path, see
+//   stack_arc_length(); stack_finite_strain: the same under 200 times the
+//   load with total Lagrangian kinematics, see stack_finite_strain();
 // - stack_cracks: the stack with friction and crack insertion in the top
 //   ply (tests/app/contact_stack_cracks.prm), see stack_cracks().
 // - hanging: blocks with the top block's corner column refined once
 //   (tests/app/contact_hanging.prm), so that its contact surface has
 //   hanging nodes; see hanging().
-// usage: app_static_contact blocks|blocks_2d|shifted|friction|stick|
-//        stick_adaptive|stick_refined|stack
+// usage: app_static_contact blocks|blocks_2d|shifted|friction|slide_far|stick|
+//        stick_adaptive|stick_refined|stack|stack_arc_length|
+//        stack_finite_strain
 //        SCENE.prm WORKDIR
 //        app_static_contact stack_cracks|hanging SCENE.prm APPENDED.prm
 //        WORKDIR
@@ -301,6 +306,80 @@ namespace
     CHECK(largest(h, "newton_iterations") <= 5);
   }
 
+  /** The upper block, pressed, slides with friction (mu = 0.3) 2.73
+   * cells off the lower one (blocks of 4 x 2 x 1 mm, 1 mm cells, the
+   * slide 1.05 mm per unit t from t = 1 to 3.6 in steps of 0.2, so that
+   * no node lands on an edge). Nodes cross the faces' edges many times
+   * and leave the other block's surface: the friction force is mu N
+   * (1e-6; measured 3e-16) and the support's shear reaction (1e-3;
+   * measured 4.0e-4); each step dissipates the mean friction force of
+   * its ends times its slip (1e-3; measured 4.5e-5), also the steps in
+   * which nodes leave, whose last friction force falls to zero; 12 nodes
+   * touch at the end; the balance holds to 1e-4 of the work (measured
+   * 2.3e-5; 2.1e-2 when a node that leaves dissipates only its spring's
+   * energy). */
+  void
+  slide_far(const std::string &scene, const std::string &workdir)
+  {
+    const double       mu = 0.3, rate = 1.05;
+    std::ostringstream text;
+    text << "subsection Geometry\n  set Length = 4\n"
+         << "  set Elements along length = 4\nend\n"
+         << sliding(rate, workdir) << "subsection Time\n  set End time = 3.6\n"
+         << "  set Number of steps = 18\nend\n";
+    const auto     simulator  = amfrac_test::run_scene<3>(scene, text.str());
+    const History &h          = simulator->history();
+    double         worst_slip = 0, worst_reaction = 0, worst_dissipation = 0;
+    // From t = 1.2 on, every touching node slides (the whole step from
+    // the second sliding step on).
+    std::size_t pressed = 0;
+    for (std::size_t r = 1; r < h.n_rows(); ++r)
+      {
+        if (std::abs(h.value(r, "time") - 1) < 1e-9)
+          pressed = r;
+        if (h.value(r, "time") < 1.2 - 1e-9)
+          continue;
+        const double normal   = h.value(r, "body_contact_normal_force");
+        const double friction = h.value(r, "body_contact_friction_force");
+        worst_slip
+          = std::max(worst_slip, std::abs(friction / (mu * normal) - 1));
+        worst_reaction
+          = std::max(worst_reaction,
+                     std::abs(std::abs(h.value(r, "reaction_z-_x")) / friction
+                              - 1));
+        if (h.value(r - 1, "time") < 1.2 - 1e-9)
+          continue;
+        const double slip
+          = rate * (h.value(r, "time") - h.value(r - 1, "time"));
+        const double dissipated = h.value(r, "friction_dissipation")
+                                  - h.value(r - 1, "friction_dissipation");
+        const double mean
+          = 0.5 * (friction + h.value(r - 1, "body_contact_friction_force"));
+        worst_dissipation = std::max(worst_dissipation,
+                                     std::abs(dissipated / (mean * slip) - 1));
+      }
+    const std::size_t last = h.n_rows() - 1;
+    std::cout << "slide_far: friction / mu N - 1 " << worst_slip
+              << ", reaction / friction - 1 " << worst_reaction
+              << ", dissipation / (mean friction x slip) - 1 "
+              << worst_dissipation << "; normal force "
+              << h.value(pressed, "body_contact_normal_force") << " N pressed, "
+              << h.value(last, "body_contact_normal_force")
+              << " N at the end on " << h.value(last, "body_contact_nodes")
+              << " nodes; balance " << relative_balance(h)
+              << ", Newton iterations " << largest(h, "newton_iterations")
+              << std::endl;
+    CHECK(pressed > 0 && h.value(last, "time") > 3.6 - 1e-9);
+    CHECK(worst_slip < 1e-6);
+    CHECK(worst_reaction < 1e-3);
+    CHECK(worst_dissipation < 1e-3);
+    // Left on each other: the upper block's nodes at x = 0, 1 over the
+    // lower block, the lower block's at x = 3, 4 under the upper one, 3
+    // across the width each.
+    CHECK(h.value(last, "body_contact_nodes") == 12);
+    CHECK(relative_balance(h) < 1e-4);
+  }
+
   void
   stick(const std::string &scene,
         const std::string &workdir,
@@ -442,6 +521,140 @@ namespace
     CHECK(relative_balance(h) < 1e-4);
   }
 
+  /** Column @p name of @p h at @p t, linear between the rows. */
+  double
+  at_time(const History &h, const std::string &name, const double t)
+  {
+    for (std::size_t r = 1; r < h.n_rows(); ++r)
+      if (h.value(r, "time") >= t - 1e-12)
+        {
+          const double t0 = h.value(r - 1, "time"), t1 = h.value(r, "time");
+          const double w = (t - t0) / (t1 - t0);
+          return (1 - w) * h.value(r - 1, name) + w * h.value(r, name);
+        }
+    return h.value(h.n_rows() - 1, name);
+  }
+
+  /** @p scene with @p text on an arc-length path of @p steps nominal
+   * steps. */
+  auto
+  arc_length_run(const std::string &scene,
+                 const std::string &text,
+                 const unsigned int steps,
+                 const std::string &workdir)
+  {
+    return amfrac_test::run_scene<2>(
+      scene,
+      text + "subsection Nonlinear solver\n  set Control = arc-length\nend\n"
+        + "subsection Time\n  set Number of steps = " + std::to_string(steps)
+        + "\nend\n" + output_to(workdir + "/arc_length"));
+  }
+
+  /** The largest difference of @p columns between the rows of @p h and
+   * @p reference interpolated at their t, relative to the reference at
+   * that t or (@p at_one) at t = 1. */
+  double
+  path_gap(const History                  &h,
+           const History                  &reference,
+           const std::vector<std::string> &columns,
+           const bool                      at_one)
+  {
+    double worst = 0;
+    for (std::size_t row = 0; row < h.n_rows(); ++row)
+      for (const std::string &column : columns)
+        {
+          const double t     = h.value(row, "time");
+          const double there = at_time(reference, column, t);
+          const double scale = at_one ? at_time(reference, column, 1) : there;
+          worst              = std::max(worst,
+                           std::abs(h.value(row, column) - there)
+                             / std::abs(scale));
+        }
+    return worst;
+  }
+
+  /** The stack on an arc-length path (Nonlinear solver/Control =
+   * arc-length, 4 nominal steps) against displacement control in steps
+   * of 0.125, interpolated at the arc-length's t: contact is part of the
+   * residual and the tangent that path following solves. The path is
+   * nearly linear (the deflection per t changes by 7e-5 from t = 0.5 to
+   * 1: the faces turn), so the interpolation is exact to about 1e-7. */
+  void
+  stack_arc_length(const std::string &scene, const std::string &workdir)
+  {
+    const auto reference = amfrac_test::run_scene<2>(
+      scene,
+      "subsection Time\n  set End time = 1.25\n  set Number of steps = 10\n"
+      "end\n"
+        + output_to(workdir + "/displacement_control"));
+    const auto        simulator = arc_length_run(scene, "", 4, workdir);
+    const History    &h         = simulator->history();
+    const double      worst     = path_gap(h,
+                                  reference->history(),
+                                  {"p0_uy", "body_contact_normal_force"},
+                                  false);
+    const std::size_t last      = h.n_rows() - 1;
+    std::cout << "stack on an arc-length path: " << h.n_rows()
+              << " steps to t = " << h.value(last, "time")
+              << ", deflection and contact force against displacement "
+                 "control: "
+              << worst << ", balance " << relative_balance(h)
+              << ", Newton iterations " << largest(h, "newton_iterations")
+              << std::endl;
+    CHECK(h.n_rows() >= 3);
+    CHECK(h.value(last, "time") >= 1 - 1e-9);
+    CHECK(worst < 1e-5);
+    CHECK(relative_balance(h) < 1e-4);
+    CHECK(largest(h, "newton_iterations") <= 4);
+  }
+
+  /** The stack under 200 times the load with total Lagrangian kinematics
+   * (tip deflection 17 % of the length, the plies sliding and rotating
+   * on each other; measured 1.3 % more than the linear tip, checked to
+   * differ by 0.5 %): the arc-length path (6 nominal steps) against load
+   * control in steps of 1/24, interpolated at the arc-length's t. */
+  void
+  stack_finite_strain(const std::string &scene, const std::string &workdir)
+  {
+    const std::string large
+      = "set Kinematics = total Lagrangian\n"
+        "subsection Boundary conditions\n  set Function constants = "
+        "q=2\nend\n";
+    const auto reference
+      = amfrac_test::run_scene<2>(scene,
+                                  large
+                                    + "subsection Time\n  set End time = 1.5\n"
+                                      "  set Number of steps = 36\nend\n"
+                                    + output_to(workdir + "/load_control"));
+    const History &r      = reference->history();
+    const auto     linear = amfrac_test::run_scene<2>(
+      scene,
+      "subsection Boundary conditions\n  set Function constants = "
+          "q=2\nend\n"
+        + output_to(workdir + "/linear"));
+    const History    &l         = linear->history();
+    const auto        simulator = arc_length_run(scene, large, 6, workdir);
+    const History    &h         = simulator->history();
+    const std::size_t last      = h.n_rows() - 1;
+    const double      worst     = path_gap(h, r, {"p0_uy", "p1_uy"}, true);
+    const double      stiffening
+      = at_time(r, "p0_uy", 1) / l.value(l.n_rows() - 1, "p0_uy");
+    std::cout << "stack, total Lagrangian: tip " << at_time(r, "p0_uy", 1)
+              << " mm (" << stiffening << " of the linear one), " << h.n_rows()
+              << " arc-length steps to t = " << h.value(last, "time")
+              << ", against load control " << worst
+              << " of the tip deflection; tips " << h.value(last, "p0_uy")
+              << ", " << h.value(last, "p1_uy") << "; balance "
+              << relative_balance(h) << " (load control " << relative_balance(r)
+              << "), Newton iterations " << largest(h, "newton_iterations")
+              << std::endl;
+    CHECK(std::abs(stiffening - 1) > 5e-3);
+    CHECK(h.value(last, "time") >= 1 - 1e-9);
+    CHECK(worst < 1e-4);
+    CHECK(relative_balance(h) < 1e-3);
+    CHECK(largest(h, "body_contact_normal_force") > 0);
+  }
+
   /** The stack with friction and crack insertion
    * (tests/app/contact_stack_cracks.prm appended): the top ply cracks
    * through its thickness at x = 0.5 and nowhere else (two faces, two
@@ -540,8 +753,14 @@ main(int argc, char **argv)
           workdir,
           "subsection Geometry\n  set Refinement region = 1\n"
           "  set Region refinements = 2\nend\n");
+  else if (which == "slide_far")
+    slide_far(scene, workdir);
   else if (which == "stack")
     stack(scene, workdir);
+  else if (which == "stack_arc_length")
+    stack_arc_length(scene, workdir);
+  else if (which == "stack_finite_strain")
+    stack_finite_strain(scene, workdir);
   else if (which == "stack_cracks")
     stack_cracks(scene, argv[3], argv[4]);
   else

@@ -278,6 +278,10 @@ namespace amfrac
       /** Set by a mesh change: the next evaluate() turns the stretch into
        * the force of the node's new stiffness. */
       bool carried = false;
+      /** The face and the point on it that the node touched, for the
+       * friction work of the step in which it leaves the face. */
+      unsigned int   face = numbers::invalid_unsigned_int;
+      Point<dim - 1> xi;
     };
 
     /** setup() after a mesh change: each new node takes the stick
@@ -332,6 +336,11 @@ namespace amfrac
     /** Every candidate of the last search is in the matrix. */
     bool
     candidates_coupled() const;
+    /** The friction work of node @p s in the step in which it left the
+     * face it touched: what a pair whose force falls to zero over the
+     * step dissipates (the trapezoidal rule of the external work). */
+    double
+    leaving_work(const unsigned int s) const;
     /** x_s - x(xi): node @p s from the point @p xi of @p face, from the
      * reference positions and the displacements separately. */
     Tensor<1, dim>
