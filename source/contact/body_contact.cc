@@ -106,8 +106,14 @@ namespace amfrac
             history[i] = parent.history;
             history[i].friction *= share;
             history[i].stick_energy *= share;
-            previous[i] = parent.previous;
-            fresh[i]    = parent.fresh;
+            // The faces are numbered again with the released ones: the
+            // old index names another face. A copy that leaves contact in
+            // the step after a crack insertion books its spring's energy
+            // only (not the half step's friction work, first order in
+            // that step's slip).
+            history[i].face = numbers::invalid_unsigned_int;
+            previous[i]     = parent.previous;
+            fresh[i]        = parent.fresh;
           }
         old.erase(key);
       }

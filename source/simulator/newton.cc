@@ -700,8 +700,12 @@ namespace amfrac
             report.converged = true;
             return report;
           }
+        // Contact between the bodies creeps before it converges, as in
+        // solve_newton_step(): the iteration limit ends it, not the
+        // stagnation test.
         if (it == p.max_iterations || !std::isfinite(norm)
-            || stagnates(report.residuals, interfaces.get(), comm)
+            || (!body_contact
+                && stagnates(report.residuals, interfaces.get(), comm))
             || !path_directions(solver, report, direction))
           return report;
         const double dd = direction * direction;
@@ -794,8 +798,12 @@ namespace amfrac
             report.converged = true;
             return report;
           }
+        // Contact between the bodies creeps before it converges, as in
+        // solve_newton_step(): the iteration limit ends it, not the
+        // stagnation test.
         if (it == p.max_iterations || !std::isfinite(norm)
-            || stagnates(report.residuals, interfaces.get(), comm)
+            || (!body_contact
+                && stagnates(report.residuals, interfaces.get(), comm))
             || !path_directions(solver, report, direction))
           return report;
         const double slope = a * direction;

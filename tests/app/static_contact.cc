@@ -563,12 +563,15 @@ namespace
     for (std::size_t row = 0; row < h.n_rows(); ++row)
       for (const std::string &column : columns)
         {
-          const double t     = h.value(row, "time");
+          const double t = h.value(row, "time");
+          if (t < 1e-12)
+            continue;
           const double there = at_time(reference, column, t);
           const double scale = at_one ? at_time(reference, column, 1) : there;
-          worst              = std::max(worst,
-                           std::abs(h.value(row, column) - there)
-                             / std::abs(scale));
+          const double gap   = std::abs(h.value(row, column) - there) / scale;
+          // A NaN would pass std::max unseen.
+          CHECK(std::isfinite(gap));
+          worst = std::max(worst, std::abs(gap));
         }
     return worst;
   }
@@ -601,7 +604,6 @@ namespace
               << worst << ", balance " << relative_balance(h)
               << ", Newton iterations " << largest(h, "newton_iterations")
               << std::endl;
-    CHECK(h.n_rows() >= 3);
     CHECK(h.value(last, "time") >= 1 - 1e-9);
     CHECK(worst < 1e-5);
     CHECK(relative_balance(h) < 1e-4);
@@ -609,7 +611,7 @@ namespace
   }
 
   /** The stack under 200 times the load with total Lagrangian kinematics
-   * (tip deflection 17 % of the length, the plies sliding and rotating
+   * (tip deflection 15 % of the length, the plies sliding and rotating
    * on each other; measured 1.3 % more than the linear tip, checked to
    * differ by 0.5 %): the arc-length path (6 nominal steps) against load
    * control in steps of 1/24, interpolated at the arc-length's t. */

@@ -65,7 +65,9 @@ namespace amfrac
    * friction force (trapezoidal over the step) less the change of the
    * stick springs' energy, so it is zero while sticking; a stick spring
    * whose node leaves contact (or is split by a crack) releases its energy
-   * into the dissipation.
+   * into the dissipation, and a node that leaves the face it touched
+   * dissipates, as a pair whose force falls to zero, the mean of its old
+   * force and none along the step's slip on that face (leaving_work()).
    *
    * Static runs: evaluate() takes the friction history from the last
    * converged state (commit()). The tangent of a pair is -c_I df/du_J with
