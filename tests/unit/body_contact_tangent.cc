@@ -19,7 +19,8 @@
 // insertion splitting nodes in contact keeps their friction (see there);
 // check_mesh_change(): so do refinement and coarsening (see there), and
 // each node's force is that of a surface set up on the new mesh and moved
-// the same way (1e-12).
+// the same way (1e-12); check_unpaired_crack_faces(): a crack face meets
+// a face it was never paired with (see there).
 #include "../check.h"
 
 #include <amfrac/contact/body_contact.h>
@@ -67,12 +68,13 @@ namespace
            && std::abs(cell->face(f)->center()[dim - 1] - 1) < 1e-12;
   }
 
-  /** Which dofs belong to the upper block. */
+  /** Where each dof is: 0 in the lower block, 1 in the upper block's
+   * cells left of x = 0.5, 2 in its others. */
   template <int dim>
-  std::vector<bool>
-  upper_dofs(const TiedCopyDoFs<dim> &dofs)
+  std::vector<int>
+  upper_parts(const TiedCopyDoFs<dim> &dofs)
   {
-    std::vector<bool>                    upper(dofs.n_dofs(), false);
+    std::vector<int>                     part(dofs.n_dofs(), 0);
     std::vector<types::global_dof_index> indices(
       dofs.get_fe().n_dofs_per_cell());
     for (const auto &cell : dofs.copy_handler().active_cell_iterators())
@@ -80,8 +82,20 @@ namespace
         {
           dofs.get_dof_indices(cell, indices);
           for (const auto i : indices)
-            upper[i] = true;
+            part[i] = cell->center()[0] < 0.5 ? 1 : 2;
         }
+    return part;
+  }
+
+  /** Which dofs belong to the upper block. */
+  template <int dim>
+  std::vector<bool>
+  upper_dofs(const TiedCopyDoFs<dim> &dofs)
+  {
+    const std::vector<int> part = upper_parts(dofs);
+    std::vector<bool>      upper(part.size());
+    for (std::size_t i = 0; i < part.size(); ++i)
+      upper[i] = part[i] > 0;
     return upper;
   }
 
@@ -393,6 +407,93 @@ namespace
               < 1e-12 * energy);
       }
   }
+  /** A crack face meets a face it was never paired with. Blocks of
+   * 2 x .. x 2 cells of 0.5 stacked along the last axis, the middle
+   * released and the upper block cracked at x = 0.5 into a left and a
+   * right fragment. The right one is lifted by 1.2 cells and pushed by
+   * @p push into the left one: the top row of the left crack face's
+   * nodes now faces the right crack face's lower row of faces, and the
+   * right face's bottom row the left face's upper row, neither of which
+   * they lay on in the reference (those, their partners, stay excluded:
+   * lifted by 0.6 of a cell, no node touches).
+   * Both rows touch (3 + 3 nodes; 2D: 1 + 1), each with half the penalty
+   * times its share of the crack face (a quarter of the unit width in
+   * all), so the left fragment is pushed along -x by Penalty x 0.25 x
+   * push and the right one by the opposite force (1e-9), with no force
+   * along the lift (frictionless, vertical faces). */
+  template <int dim>
+  void
+  check_unpaired_crack_faces()
+  {
+    Triangulation<dim>        tria;
+    std::vector<unsigned int> cells(dim, 2);
+    cells[dim - 1] = 4;
+    Point<dim> top;
+    for (unsigned int d = 0; d < dim; ++d)
+      top[d] = d == dim - 1 ? 2 : 1;
+    GridGenerator::subdivided_hyper_rectangle(tria, cells, Point<dim>(), top);
+    TiedCopyDoFs<dim> dofs(tria, 1);
+    // The crack is a cohesive pair (its own law keeps its sides apart
+    // where they lay on each other); the middle is unbonded.
+    const auto crack = [](const auto &cell, const unsigned int f) {
+      const auto x = cell->face(f)->center();
+      return !cell->at_boundary(f) && std::abs(x[0] - 0.5) < 1e-12
+             && x[dim - 1] > 1;
+    };
+    const auto cracked = [&](const auto &cell, const unsigned int f) {
+      return at_middle<dim>(cell, f) || crack(cell, f);
+    };
+    dofs.distribute(cracked);
+    BodyContact<dim> contact(contact_parameters(0), MPI_COMM_WORLD);
+    contact.set_static();
+    contact.setup(dofs, cracked, crack);
+
+    // The fragments' dofs: 1 left, 2 right (above the middle).
+    const std::vector<int> fragment    = upper_parts(dofs);
+    const double           push        = 1e-3;
+    const auto             right_moved = [&](const double lift) {
+      TrilinosVector u(dofs.locally_owned_dofs(), MPI_COMM_WORLD);
+      for (const auto i : dofs.locally_owned_dofs())
+        if (fragment[i] == 2)
+          u(i) = dofs.component(i) == dim - 1 ? lift :
+                             dofs.component(i) == 0       ? -push :
+                                                            0.;
+      u.compress(VectorOperation::insert);
+      return u;
+    };
+    // Lifted by 0.6 of a cell, every node of the crack faces lies on
+    // faces it lay on in the reference, its partners': none touches.
+    TrilinosVector force(right_moved(0.3));
+    contact.evaluate(right_moved(0.3), force);
+    const double on_partners = contact.columns()[0].second;
+    contact.evaluate(right_moved(0.6), force);
+
+    // Forces on each fragment along x and along the lift, summed over
+    // the ranks.
+    double sums[2][2] = {{0, 0}, {0, 0}};
+    for (const auto i : dofs.locally_owned_dofs())
+      if (fragment[i] > 0 && dofs.component(i) == 0)
+        sums[fragment[i] - 1][0] += force(i);
+      else if (fragment[i] > 0 && dofs.component(i) == dim - 1)
+        sums[fragment[i] - 1][1] += force(i);
+    for (auto &row : sums)
+      for (double &s : row)
+        s = Utilities::MPI::sum(s, MPI_COMM_WORLD);
+    const double expected  = contact_parameters(0).penalty * 0.25 * push;
+    const double nodes     = contact.columns()[0].second;
+    const double row_nodes = dim == 3 ? 3 : 1;
+    std::cout << dim << "D unpaired crack faces: " << nodes
+              << " nodes in contact, force on the left fragment " << sums[0][0]
+              << " along x (expected " << -expected << "), on the right "
+              << sums[1][0] << "; along the lift " << sums[0][1] << ", "
+              << sums[1][1] << "; lifted by 0.6 of a cell " << on_partners
+              << " nodes" << std::endl;
+    CHECK(on_partners == 0);
+    CHECK(nodes == 2 * row_nodes);
+    CHECK(std::abs(sums[0][0] + expected) < 1e-9 * expected);
+    CHECK(std::abs(sums[1][0] - expected) < 1e-9 * expected);
+    CHECK(std::abs(sums[0][1]) + std::abs(sums[1][1]) < 1e-12 * expected);
+  }
 } // namespace
 
 int
@@ -405,5 +506,7 @@ main(int argc, char **argv)
   check_split<3>();
   check_mesh_change<2>();
   check_mesh_change<3>();
+  check_unpaired_crack_faces<2>();
+  check_unpaired_crack_faces<3>();
   return amfrac_test::summary();
 }
