@@ -107,10 +107,11 @@ namespace amfrac
             history[i].friction *= share;
             history[i].stick_energy *= share;
             // The faces are numbered again with the released ones: the
-            // old index names another face. A copy that leaves contact in
-            // the step after a crack insertion books its spring's energy
-            // only (not the half step's friction work, first order in
-            // that step's slip).
+            // old index names another face. A node (split or not) that
+            // leaves contact in the step after a crack insertion (a
+            // static run's re-solved step; an explicit run evaluates
+            // before anything slips) books its spring's energy only, not
+            // the half step's friction work (first order in the slip).
             history[i].face = numbers::invalid_unsigned_int;
             previous[i]     = parent.previous;
             fresh[i]        = parent.fresh;

@@ -415,7 +415,8 @@ namespace
    * nodes now faces the right crack face's lower row of faces, and the
    * right face's bottom row the left face's upper row, neither of which
    * they lay on in the reference (those, their partners, stay excluded:
-   * lifted by 0.6 of a cell, no node touches).
+   * lifted by 0.6 of a cell, each node that lies on a face of the other
+   * crack face lies on a partner, and none touches).
    * Both rows touch (3 + 3 nodes; 2D: 1 + 1), each with half the penalty
    * times its share of the crack face (a quarter of the unit width in
    * all), so the left fragment is pushed along -x by Penalty x 0.25 x
@@ -461,8 +462,9 @@ namespace
       u.compress(VectorOperation::insert);
       return u;
     };
-    // Lifted by 0.6 of a cell, every node of the crack faces lies on
-    // faces it lay on in the reference, its partners': none touches.
+    // Lifted by 0.6 of a cell, a crack face's node that lies on a face of
+    // the other one lies on a face it lay on in the reference (its
+    // partner's): none touches.
     TrilinosVector force(right_moved(0.3));
     contact.evaluate(right_moved(0.3), force);
     const double on_partners = contact.columns()[0].second;
