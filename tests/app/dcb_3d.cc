@@ -12,10 +12,11 @@
 //   along x only), and at the end the process zone (between the debonded
 //   and the damaged length) spans at least 3 elements;
 // - median Newton iterations per step <= 6.
-// Run on 2 ranks by ctest, with steps of twice the scene's dissipation
+// Run on one rank by ctest, with steps of twice the scene's dissipation
 // (1 N mm, 100 steps: 25 s instead of 65 s in CI; peak -1.0 %, envelope
 // -2.0 % and -2.2 % against the scene's steps' -1.4, -1.1 and -2.1 %;
-// scene/dcb_3d, a benchmark, runs the file as it is).
+// scene/dcb_3d, a benchmark, runs the file as it is). It runs on any
+// number of ranks (mpirun -np 2 app_dcb_3d ...).
 //
 // usage: app_dcb_3d SCENE.prm WORKDIR
 #include "../check.h"
