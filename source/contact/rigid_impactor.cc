@@ -86,14 +86,16 @@ namespace amfrac
 
   template <int dim>
   RigidImpactor<dim>::RigidImpactor(const parameters::Impactor &p,
-                                    MPI_Comm                    comm)
+                                    MPI_Comm                    comm,
+                                    const bool                  explicit_run)
     : comm(comm)
     , radius(p.radius)
     , mass(p.mass)
     , penalty(p.penalty)
     , friction_coefficient(p.friction)
     , tangential_factor(p.tangential_factor)
-    , static_mode(p.prescribed)
+    , static_mode(p.prescribed && !explicit_run)
+    , prescribed(p.prescribed)
     , guided(p.guided && !p.prescribed)
     , boundary_id(p.boundary_id)
     , normal_axis(p.boundary_id / 2)
@@ -128,6 +130,33 @@ namespace amfrac
     path->set_time(t);
     for (unsigned int d = 0; d < dim; ++d)
       center[d] = start[d] + path->value(Point<dim>(), d);
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  RigidImpactor<dim>::step_to(const double t, const double dt)
+  {
+    Assert(prescribed && !static_mode, ExcInternalError());
+    const Tensor<1, dim> before = center;
+    move_to(t);
+    const Tensor<1, dim> move = center - before;
+    velocity                  = move / dt;
+    return move;
+  }
+
+
+
+  template <int dim>
+  double
+  RigidImpactor<dim>::finish_step(const Tensor<1, dim> &force_before,
+                                  const Tensor<1, dim> &move,
+                                  const double          dt)
+  {
+    const Tensor<1, dim> mean = 0.5 * (force_before + force_on_laminate());
+    row_impulse -= dt * mean;
+    return mean * move;
   }
 
 
@@ -491,7 +520,8 @@ namespace amfrac
   {
     for (const Node &node : nodes)
       for (unsigned int c = 0; c < dim; ++c)
-        rows(node.dofs[c]) += 2 * stiffest() * node.stiffness;
+        rows(node.dofs[c])
+          += (prescribed ? 1 : 2) * stiffest() * node.stiffness;
     rows.compress(VectorOperation::add);
   }
 
@@ -504,6 +534,9 @@ namespace amfrac
     double sum = 0;
     for (const Node &node : nodes)
       sum += node.stiffness;
+    // Collective on every rank alike: prescribed is the same everywhere.
+    if (prescribed)
+      return 0;
     return 2 * stiffest() * Utilities::MPI::sum(sum, comm) / mass;
   }
 
@@ -528,12 +561,14 @@ namespace amfrac
   RigidImpactor<dim>::columns(const double t)
   {
     const unsigned int a = normal_axis;
-    const double       mean
-      = t > row_time ?
-          -inward * mass * (velocity[a] - row_velocity[a]) / (t - row_time) :
-          0.;
-    row_velocity = velocity;
-    row_time     = t;
+    // The impulse on the sphere over the interval: its momentum change, or
+    // for a prescribed sphere the sum of its steps' impulses.
+    const double impulse
+      = prescribed ? row_impulse[a] : mass * (velocity[a] - row_velocity[a]);
+    const double mean = t > row_time ? -inward * impulse / (t - row_time) : 0.;
+    row_velocity      = velocity;
+    row_time          = t;
+    row_impulse       = Tensor<1, dim>();
     std::vector<std::pair<std::string, double>> columns
       = {{"impactor_position", center[a]},
          {"impactor_velocity", velocity[a]},
@@ -582,6 +617,9 @@ namespace amfrac
       for (unsigned int d = 0; d < dim; ++d)
         values.push_back((*t)[d]);
     values.push_back(row_time);
+    for (const auto *t : {&force, &row_impulse})
+      for (unsigned int d = 0; d < dim; ++d)
+        values.push_back((*t)[d]);
     return values;
   }
 
@@ -591,15 +629,22 @@ namespace amfrac
   void
   RigidImpactor<dim>::set_state(const std::vector<double> &values)
   {
-    AssertThrow(values.size() == 4 * dim + 1,
+    // Checkpoints before stop 54 end with row_time (a free sphere's force
+    // is its mass times its acceleration).
+    AssertThrow(values.size() == 6 * dim + 1 || values.size() == 4 * dim + 1,
                 ExcMessage("the checkpoint's impactor state has "
                            + std::to_string(values.size()) + " values, not "
-                           + std::to_string(4 * dim + 1)));
+                           + std::to_string(6 * dim + 1)));
     std::size_t k = 0;
     for (auto *t : {&center, &velocity, &acceleration, &row_velocity})
       for (unsigned int d = 0; d < dim; ++d)
         (*t)[d] = values[k++];
-    row_time = values[k];
+    row_time = values[k++];
+    force    = mass * acceleration;
+    if (k < values.size())
+      for (auto *t : {&force, &row_impulse})
+        for (unsigned int d = 0; d < dim; ++d)
+          (*t)[d] = values[k++];
     for (unsigned int d = 0; d < dim; ++d)
       if (guided && d != normal_axis && velocity[d] != 0)
         throw InputError("Impactor/Guided",

@@ -1,4 +1,5 @@
 #include <amfrac/material/orthotropic.h>
+#include <amfrac/parameters/input_error.h>
 #include <cmath>
 #include <deal.II/lac/full_matrix.h>
 #include <stdexcept>
@@ -36,9 +37,8 @@ namespace amfrac
     require_positive(const double value, const char *name)
     {
       if (!(value > 0))
-        throw std::invalid_argument(std::string(name)
-                                    + " must be positive, got "
-                                    + std::to_string(value));
+        throw std::invalid_argument(
+          std::string(name) + " must be positive, got " + number_text(value));
     }
   } // namespace
 

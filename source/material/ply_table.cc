@@ -60,7 +60,7 @@ namespace amfrac
                          "Geometry/2D model = in-plane needs a symmetric "
                          "stacking sequence: this one couples membrane "
                          "and bending (|B| / (|A| h) = "
-                           + std::to_string(B.norm() / (A.norm() * h))
+                           + number_text(B.norm() / (A.norm() * h))
                            + "), which a plane-stress model cannot carry");
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = i; j < dim; ++j)

@@ -30,10 +30,11 @@ namespace amfrac
         "free: the sphere has a Mass and starts at Center with Velocity, and "
         "moves with the explicit time integration (Time/Time integration = "
         "explicit). prescribed: its centre is Center + Velocity t, or "
-        "Center + Path(t) if a Path is given (Velocity is then not used), "
-        "an indenter driven through a static run (Time/Time integration = "
-        "static; the contact tangent enters Newton's matrix); the Mass and "
-        "Guided are not used.");
+        "Center + Path(t) if a Path is given (Velocity is then not used): "
+        "an indenter driven through a static run (the contact tangent "
+        "enters Newton's matrix) or an explicit one (a striker at a "
+        "prescribed speed); the work it does is external work, and the Mass "
+        "and Guided are not used.");
       prm.declare_entry("Radius",
                         "5",
                         Patterns::Double(0),
@@ -75,7 +76,8 @@ namespace amfrac
                         "Velocity of the impactor at t = 0 [mm/s] "
                         "(-10000: 10 m/s towards -z); with Motion = "
                         "prescribed its constant velocity [mm per unit of "
-                        "the load parameter t].");
+                        "t: the load parameter of a static run, mm/s in an "
+                        "explicit one].");
       prm.declare_entry(
         "Penalty",
         "5e5",
@@ -105,7 +107,8 @@ namespace amfrac
         "",
         Patterns::Anything(),
         "Motion = prescribed only: the centre's displacement from Center "
-        "[mm] as three expressions of the load parameter t separated by ';' "
+        "[mm] as three expressions of t (the load parameter of a static "
+        "run, the time [s] of an explicit one) separated by ';' "
         "(e.g. '0; 0; -min(t, 0.03)' presses the sphere 0.03 mm into a z+ "
         "face, then '0.5*max(t - 0.03, 0); 0; -min(t, 0.03)' also slides "
         "it along x). Empty: Velocity t.");

@@ -1637,7 +1637,7 @@ namespace amfrac
                          "instead");
       if (adaptivity.during_history() && cohesive.interfaces.empty()
           && ((!cracks.active && !time.explicit_dynamics && !plastic_plies
-               && !contact.active)
+               && !contact.active && !impactor.active)
               || adaptivity.process_zone_elements > 0))
         throw InputError(
           adaptivity.process_zone_elements > 0 ?
@@ -1646,9 +1646,9 @@ namespace amfrac
                                         "Adaptivity/Error threshold",
           "refinement during a load history is for explicit runs and for "
           "scenes with cohesive interfaces, crack insertion, plastic "
-          "plies or contact between the bodies (the process-zone rule for "
-          "scenes with cohesive interfaces); a linear static scene adapts "
-          "by Refinement cycles");
+          "plies, an impactor or contact between the bodies (the "
+          "process-zone rule for scenes with cohesive interfaces); a linear "
+          "static scene adapts by Refinement cycles");
       if (dimension == 2 && adaptivity.process_zone_axes == 2)
         throw InputError("Adaptivity/Process zone directions",
                          "y is the thickness of a 2D laminate; the process-"
@@ -1848,11 +1848,6 @@ namespace amfrac
       if (!impactor.active)
         return;
       const std::string face = "Impactor/Face";
-      require(!impactor.prescribed || !time.explicit_dynamics,
-              "Impactor/Motion",
-              "a prescribed impactor is an indenter for static runs: set "
-              "Time/Time integration = static, or Motion = free for an "
-              "impact");
       require(impactor.prescribed || time.explicit_dynamics,
               "Impactor/Motion",
               "a free impactor moves with the explicit time integration: set "
@@ -1880,13 +1875,6 @@ namespace amfrac
                   "mesh; refine the contact zone with Geometry/Refinement "
                   "region instead");
         }
-      require(!adaptivity.during_history() || time.explicit_dynamics,
-              face,
-              "a prescribed impactor cannot be combined yet with a mesh that "
-              "adapts during a static run (Refine every, Error threshold, "
-              "Process zone elements: in 3D they refine along the plies "
-              "only); refine the contact zone with Geometry/Refinement "
-              "region");
       require(time.mass_scaling_step == 0,
               face,
               "mass scaling (Time/Mass scaling time step) would change the "
@@ -2082,9 +2070,9 @@ namespace amfrac
       const auto &times = buckling.analysis_times;
       if (!times.empty() && times.back() > time.end_time * (1 + 1e-12))
         throw InputError("Buckling/Analysis times",
-                         "the last, " + std::to_string(times.back())
+                         "the last, " + number_text(times.back())
                            + ", lies past Time/End time ("
-                           + std::to_string(time.end_time) + ")");
+                           + number_text(time.end_time) + ")");
       if (!times.empty() && adaptivity.active())
         throw InputError("Buckling/Analysis times",
                          "refinement cycles analyse each mesh after its last "

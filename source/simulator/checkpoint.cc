@@ -789,9 +789,8 @@ namespace amfrac
     reading(restart->folder, comm, [&]() {
       const double dt = run.get_scalar("explicit.dt");
       if (dt != state.dt)
-        throw InputError("the checkpoint's time step is " + std::to_string(dt)
-                         + " s, these parameters give "
-                         + std::to_string(state.dt)
+        throw InputError("the checkpoint's time step is " + number_text(dt)
+                         + " s, these parameters give " + number_text(state.dt)
                          + " s: the Time subsection changed");
       state.steps          = run.get_integer("explicit.steps");
       state.strain_energy  = run.get_scalar("explicit.strain_energy");
@@ -809,20 +808,21 @@ namespace amfrac
           state.base_t           = run.get_scalar("explicit.base_t");
           state.remeshing_energy = run.get_scalar("explicit.remeshing_energy");
         }
-      // The impactor's centre, velocity and acceleration (the parameters
+      // The impactor's centre, velocity and acceleration, then its force
+      // and impulse (not in checkpoints before stop 54) (the parameters
       // say whether there is one; the run's text is the checkpoint's).
       if (parameters.impactor.active)
         {
-          state.impactor.resize(4 * dim + 1);
-          for (std::size_t k = 0; k < state.impactor.size(); ++k)
-            {
-              const std::string key = "explicit.impactor." + std::to_string(k);
-              if (!run.has(key))
-                throw InputError("Impactor/Face",
-                                 "the checkpoint has no impactor state: it "
-                                 "was written by a run without one");
-              state.impactor[k] = run.get_scalar(key);
-            }
+          const auto key = [](const std::size_t k) {
+            return "explicit.impactor." + std::to_string(k);
+          };
+          if (!run.has(key(4 * dim)))
+            throw InputError("Impactor/Face",
+                             "the checkpoint has no impactor state: it "
+                             "was written by a run without one");
+          state.impactor.clear();
+          for (std::size_t k = 0; k < 6 * dim + 1 && run.has(key(k)); ++k)
+            state.impactor.push_back(run.get_scalar(key(k)));
         }
       // The impactor's friction history.
       if (parameters.impactor.active && parameters.impactor.friction == 0

@@ -167,7 +167,7 @@ namespace amfrac
     double stable = 2. / std::sqrt(bulk + springs);
     if (!(stable > 0 && std::isfinite(stable)))
       throw CollectiveError("the stable time step estimate is "
-                            + std::to_string(stable)
+                            + number_text(stable)
                             + ": check the material constants (moduli in "
                               "MPa, densities in t/mm^3) and the mesh");
     pcout << "  stable time step " << stable << " s: elements alone "
@@ -292,9 +292,9 @@ namespace amfrac
       return time.safety_factor * stable;
     if (time.time_step > stable && !time.allow_unstable)
       throw InputError("Time/Time step",
-                       "the fixed step " + std::to_string(time.time_step)
+                       "the fixed step " + number_text(time.time_step)
                          + " s exceeds the estimated stable step "
-                         + std::to_string(stable)
+                         + number_text(stable)
                          + " s (set Time/Allow unstable time step = "
                            "true to run it anyway)");
     return time.time_step;
@@ -428,8 +428,9 @@ namespace amfrac
     lump_mass();
     if (parameters.impactor.active)
       {
-        impactor
-          = std::make_unique<RigidImpactor<dim>>(parameters.impactor, comm);
+        impactor = std::make_unique<RigidImpactor<dim>>(parameters.impactor,
+                                                        comm,
+                                                        true);
         impactor->setup(dof_layer);
       }
     if (parameters.contact.active)
@@ -734,6 +735,9 @@ namespace amfrac
         impose_prescribed(t, solution);
         set_initial_velocity(free_inverse_mass, velocity);
         update_damping();
+        // A prescribed sphere starts where its path is at t = 0.
+        if (impactor && impactor->is_prescribed())
+          impactor->move_to(t);
         evaluate(t);
         initial_energy = strain_energy + kinetic_energy();
         if (body_contact)
@@ -744,7 +748,7 @@ namespace amfrac
               throw InputError(
                 "Impactor/Center",
                 "the impactor overlaps the laminate at t = 0 (by "
-                  + std::to_string(impactor->penetration_depth())
+                  + number_text(impactor->penetration_depth())
                   + " mm); start it clear of the face");
             initial_energy += impactor->kinetic_energy();
           }
@@ -885,13 +889,22 @@ namespace amfrac
           old_solution = solution;
           solution.add(dt, velocity);
           hanging->distribute(solution);
-          if (impactor)
+          const bool free_sphere = impactor && !impactor->is_prescribed();
+          if (free_sphere)
             {
               impactor->kick(0.5 * dt);
               impactor->drift(dt);
             }
           ++n;
           t = base_t + (n - base_steps) * dt;
+          // A prescribed sphere moves to where it is at t; it does the
+          // work of its mean force over the move (as in static runs).
+          Tensor<1, dim> sphere_move, sphere_force;
+          if (impactor && !free_sphere)
+            {
+              sphere_force = impactor->force_on_laminate();
+              sphere_move  = impactor->step_to(t, dt);
+            }
           try
             {
               impose_prescribed(t, solution);
@@ -903,8 +916,11 @@ namespace amfrac
               stop_with_last_good(e.what());
             }
           velocity.add(0.5 * dt, acceleration);
-          if (impactor)
+          if (free_sphere)
             impactor->kick(0.5 * dt);
+          else if (impactor)
+            external_work
+              += impactor->finish_step(sphere_force, sphere_move, dt);
           displacement_step = solution;
           displacement_step -= old_solution;
           previous_load += load;

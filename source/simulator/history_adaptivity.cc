@@ -248,13 +248,16 @@ namespace amfrac
       if (interfaces)
         before = interfaces->ledger(comm);
       // The contact's energy is that of the converged state (the last
-      // row's evaluation, committed).
+      // row's evaluation, committed); so is the sphere's.
       if (body_contact)
         friction_before = friction_force();
+      const auto contact_energies = [this]() {
+        return (body_contact ? body_contact->contact_energy() : 0.)
+               + (impactor ? impactor->contact_energy() : 0.);
+      };
       const double stored_before
         = bulk_strain_energy(newton->converged_solution)
-          + total(before, &Ledger::work)
-          + (body_contact ? body_contact->contact_energy() : 0.);
+          + total(before, &Ledger::work) + contact_energies();
       typename CohesiveInterfaces<dim>::Snapshot snapshot;
       if (interfaces)
         snapshot = interfaces->snapshot(comm);
@@ -308,15 +311,22 @@ namespace amfrac
           body_contact->commit();
           friction_after = friction_force();
         }
+      // The sphere's nodes are the new face's (setup_newton()); its force
+      // on them at the transferred state starts the trapezoidal work of
+      // the next step, and its stick springs' forces are the new nodes'.
+      if (impactor)
+        {
+          impactor->commit();
+          newton->sphere_force = impactor->force_on_laminate();
+        }
       newton->previous_residual = newton->residual;
       newton->previous_load     = newton->external_load;
       newton->converged_force   = load_force(newton->residual);
       if (interfaces)
         after = interfaces->ledger(comm);
-      newton->remeshing_energy
-        += bulk_strain_energy(solution) + total(after, &Ledger::work)
-           + (body_contact ? body_contact->contact_energy() : 0.)
-           - stored_before;
+      newton->remeshing_energy += bulk_strain_energy(solution)
+                                  + total(after, &Ledger::work)
+                                  + contact_energies() - stored_before;
     }
     if (!cycle_summary)
       cycle_summary = std::make_unique<History>(

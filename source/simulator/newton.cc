@@ -1008,7 +1008,7 @@ namespace amfrac
         && impactor->penetration_depth() > 1e-12 * parameters.impactor.radius)
       throw InputError("Impactor/Center",
                        "the impactor overlaps the laminate at t = 0 (by "
-                         + std::to_string(impactor->penetration_depth())
+                         + number_text(impactor->penetration_depth())
                          + " mm); start it clear of the face");
     n.sphere_force  = impactor->force_on_laminate();
     n.sphere_center = impactor->position();
@@ -1410,7 +1410,7 @@ namespace amfrac
               line << "; step cut to";
             pcout << line.str() << " " << dt << (p.arc_length ? " in t" : "")
                   << (by_dissipation ? " (and the " + control + " increment to "
-                                         + std::to_string(dtau) + ")" :
+                                         + number_text(dtau) + ")" :
                                        "")
                   << std::endl;
             if (dt < p.minimum_step_fraction * nominal

@@ -418,10 +418,6 @@ $impactor"
 prescribed='subsection Impactor
   set Motion = prescribed
 end'
-expect impactor_prescribed_explicit "Impactor/Motion" "$base
-$impactor
-$explicit
-$prescribed"
 # Friction and the prescribed path of the sphere.
 expect impactor_path_free "Impactor/Path" "$base
 $impactor
@@ -528,15 +524,6 @@ $impactor
 $explicit
 subsection Impactor
   set Center = 0.5, 0.5, 5
-end"
-expect impactor_adaptive "Impactor/Face" "$base
-$impactor
-$prescribed
-subsection Cohesive interfaces
-  set Interfaces = 1
-end
-subsection Adaptivity
-  set Refine every = 1
 end"
 expect impactor_center "Center" "$base
 $impactor

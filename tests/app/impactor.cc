@@ -37,6 +37,18 @@
 //   impulses from the cylinder's momentum), the cylinder leaves slower
 //   along x than without friction, which changes its x velocity by less
 //   than 5 % of the change with friction.
+// - prescribed: prm/impact_plate_striker.prm (a tup of 8 mm radius driven
+//   at 3 m/s: Motion = prescribed, its centre Center + Velocity t) with
+//   tests/app/impactor_coarse.prm, against the same tup free with a mass
+//   of 1 t (it keeps its speed to 1e-6), both at the same Time step:
+//   contact force,
+//   mean contact force, strain energy and the plate centre's deflection
+//   agree to 1e-5 of their largest values row by row (measured 1.8e-7);
+//   the striker's velocity is the prescribed one at every row; the
+//   striker's work (its mean force times its move, external work)
+//   balances the plate's energy within 1e-4 of that work (measured
+//   1.9e-5, as the free heavy tup's balance against the energy it
+//   lost).
 // - cracks_2d: prm/impact_beam_2d.prm's first 120 us (a cylinder at 4 m/s
 //   on a cross-ply beam whose bottom 90-degree plies crack): at least 10
 //   crack faces inserted; at every insertion event the energy (with the
@@ -44,7 +56,8 @@
 //   balance within 1e-5 of the cylinder's energy at every step; the
 //   cylinder slowed.
 // usage: app_impactor
-//        wall|wall_cylinder|wall_2d|free|scene|oblique_2d|cracks_2d
+//        wall|wall_cylinder|wall_2d|free|scene|oblique_2d|cracks_2d|
+//        prescribed
 //        SCENE.prm
 //        COARSE.prm WORKDIR
 //        app_impactor scene_unbonded SCENE.prm COARSE.prm UNBONDED.prm
@@ -309,6 +322,79 @@ namespace
     CHECK(h.value(last, "impactor_velocity") > -0.99 * speed);
   }
 
+  /** The largest difference of @p column between two histories of the
+   * same rows, against the largest magnitude of the column in @p a. */
+  double
+  relative_difference(const History     &a,
+                      const History     &b,
+                      const std::string &column)
+  {
+    double difference = 0;
+    for (std::size_t r = 0; r < a.n_rows(); ++r)
+      {
+        const double d = std::abs(a.value(r, column) - b.value(r, column));
+        // A NaN must not pass.
+        difference = std::isfinite(d) ? std::max(difference, d) : 1e300;
+      }
+    return difference / std::max(largest(a, column), 1e-300);
+  }
+
+  /** The coarse striker scene @p prm, against the same tup free and
+   * heavy (see the file header). */
+  void
+  prescribed(const std::string &prm,
+             const std::string &coarse,
+             const std::string &workdir)
+  {
+    const double striker_speed = 3000, heavy_mass = 1;
+    // Below the stable step of both runs (8.9e-9 s, the interfaces'
+    // penalty); both take it.
+    const std::string common
+      = amfrac_test::file_text(coarse)
+        + "subsection Time\n  set Time step = 8e-9\nend\n";
+    const auto striker
+      = amfrac_test::run_scene<3>(prm,
+                                  common + amfrac_test::history_only(workdir));
+    const auto heavy = amfrac_test::run_scene<3>(
+      prm,
+      common + "subsection Impactor\n  set Motion = free\n  set Mass = "
+        + std::to_string(heavy_mass) + "\nend\n"
+        + amfrac_test::history_only(workdir + "-heavy"));
+    const History    &p = striker->history(), &f = heavy->history();
+    const std::size_t last = p.n_rows() - 1;
+    CHECK(p.n_rows() == f.n_rows() && p.n_rows() == 21);
+    if (p.n_rows() != f.n_rows())
+      return;
+    double velocity_error = 0;
+    for (std::size_t r = 1; r < p.n_rows(); ++r)
+      velocity_error
+        = std::max(velocity_error,
+                   std::abs(p.value(r, "impactor_velocity") + striker_speed));
+    const double work    = p.value(last, "external_work");
+    const double balance = largest(p, "balance_error") / work;
+    std::cout << "prescribed striker against a free one of 1 t: contact "
+                 "force "
+              << highest(p, "contact_force") << " N ("
+              << highest(f, "contact_force") << " N), differences "
+              << relative_difference(p, f, "contact_force") << ", "
+              << relative_difference(p, f, "mean_contact_force") << ", "
+              << relative_difference(p, f, "strain_energy") << ", "
+              << relative_difference(p, f, "p0_uz") << "; the striker's work "
+              << work << " N mm, balance " << balance << " of it (free: "
+              << largest(f, "balance_error")
+                   / (0.5 * heavy_mass * striker_speed * striker_speed
+                      - f.value(last, "impactor_kinetic"))
+              << " of the energy the sphere lost); velocity off by "
+              << velocity_error << " mm/s" << std::endl;
+    CHECK(highest(p, "contact_force") > 0);
+    for (const char *column :
+         {"contact_force", "mean_contact_force", "strain_energy", "p0_uz"})
+      CHECK(relative_difference(p, f, column) < 1e-5);
+    CHECK(velocity_error < 1e-9 * striker_speed);
+    CHECK(work > 0);
+    CHECK(balance < 1e-4);
+  }
+
   /** The scene with its mid-plane released (@p unbonded appended): the
    * sphere and the contact between the plate's halves together. */
   void
@@ -393,8 +479,8 @@ main(int argc, char **argv)
       AssertThrow(argc == 5
                     || (argc == 6 && std::string(argv[1]) == "scene_unbonded"),
                   ExcMessage("usage: app_impactor wall|wall_cylinder|"
-                             "wall_2d|free|scene|oblique_2d|cracks_2d "
-                             "SCENE.prm COARSE.prm WORKDIR"));
+                             "wall_2d|free|scene|oblique_2d|cracks_2d|"
+                             "prescribed SCENE.prm COARSE.prm WORKDIR"));
       const std::string which = argv[1];
       if (which == "wall" || which == "wall_cylinder")
         wall(argv[2], argv[4], which == "wall_cylinder");
@@ -406,6 +492,8 @@ main(int argc, char **argv)
         oblique_2d(argv[4]);
       else if (which == "cracks_2d")
         cracks_2d(argv[2], argv[3], argv[4]);
+      else if (which == "prescribed")
+        prescribed(argv[2], argv[3], argv[4]);
       else if (which == "scene_unbonded")
         scene_unbonded(argv[2], argv[3], argv[4], argv[5]);
       else

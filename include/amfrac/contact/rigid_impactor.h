@@ -78,7 +78,12 @@ namespace amfrac
   public:
     using Vector = TrilinosWrappers::MPI::Vector;
 
-    RigidImpactor(const parameters::Impactor &parameters, MPI_Comm comm);
+    /** @p explicit_run: the history is committed at every evaluate(), as
+     * the explicit time integration takes no trial states (a prescribed
+     * sphere in a static run keeps it until commit()). */
+    RigidImpactor(const parameters::Impactor &parameters,
+                  MPI_Comm                    comm,
+                  const bool                  explicit_run = false);
 
     /** The candidate nodes of the current mesh: the owned nodes on the
      * face, with their area. After a mesh change or a crack insertion the
@@ -97,6 +102,27 @@ namespace amfrac
      * or Center + Path(t). */
     void
     move_to(const double t);
+    /** A prescribed sphere in an explicit run, before the evaluate() of
+     * the step that ends at @p t (of length @p dt): it moves to where it is
+     * at @p t, with the mean velocity of the step. Returns the move. */
+    Tensor<1, dim>
+    step_to(const double t, const double dt);
+    /** The same after that evaluate(): the impulse of the mean force of
+     * the step on the sphere, for the mean contact force of the output
+     * interval. @p force_before is the force on the laminate before the
+     * step (force_on_laminate()). Returns the work the sphere did on the
+     * laminate and its contact in the step, the mean force on the laminate
+     * times the move (the trapezoidal rule, as in static runs). */
+    double
+    finish_step(const Tensor<1, dim> &force_before,
+                const Tensor<1, dim> &move,
+                const double          dt);
+    /** Whether the centre is prescribed (an indenter) rather than free. */
+    bool
+    is_prescribed() const
+    {
+      return prescribed;
+    }
 
     /** Static runs: keep the friction history of the last evaluate() (the
      * converged state) as the reference of the next step's slips. */
@@ -167,10 +193,12 @@ namespace amfrac
       center += step * velocity;
     }
 
+    /** Zero for a prescribed sphere: its motion is a boundary condition
+     * (the work it does is external work), not a body of the system. */
     double
     kinetic_energy() const
     {
-      return 0.5 * mass * velocity.norm_square();
+      return prescribed ? 0. : 0.5 * mass * velocity.norm_square();
     }
 
     /** sum_i k_i g_i^2 / 2 at the last evaluate(), all ranks. */
@@ -187,21 +215,24 @@ namespace amfrac
       return penetration;
     }
 
-    /** The linear momentum of the sphere. */
+    /** The linear momentum of the sphere (zero if prescribed, see
+     * kinetic_energy()). */
     Tensor<1, dim>
     momentum() const
     {
-      return mass * velocity;
+      return prescribed ? Tensor<1, dim>() : mass * velocity;
     }
 
     /** Explicit stability: Gershgorin's row sums of the contact springs,
      * 2 k_i on each component of every candidate node (its own spring and
-     * the coupling to the sphere), added to @p rows (owned entries). */
+     * the coupling to the sphere; k_i alone for a prescribed sphere, which
+     * is no unknown), added to @p rows (owned entries). */
     void
     add_penalty_rows(Vector &rows) const;
 
     /** Gershgorin's bound on omega^2 of the sphere's row: 2 sum k_i / M
-     * over the candidates of all ranks. Collective. */
+     * over the candidates of all ranks (zero for a prescribed sphere: it
+     * has no row). Collective. */
     double
     frequency_squared() const;
 
@@ -228,8 +259,9 @@ namespace amfrac
     std::vector<std::pair<std::string, double>>
     friction_columns() const;
 
-    /** Centre, velocity and acceleration, and the velocity and time of
-     * the last output step (for a checkpoint). */
+    /** Centre, velocity and acceleration, the velocity and time of the
+     * last output step, the force and, for a prescribed sphere, the
+     * impulse since that step (for a checkpoint). */
     std::vector<double>
     state() const;
     void
@@ -411,6 +443,8 @@ namespace amfrac
     double   radius, mass, penalty;
     double   friction_coefficient, tangential_factor;
     bool     static_mode;
+    /** The centre follows move_to() (an indenter), not the forces. */
+    bool prescribed;
     /** A free sphere moves along the face's normal only. */
     bool guided;
     /** Center + path(t) for a prescribed sphere (null: Velocity t). */
@@ -426,6 +460,10 @@ namespace amfrac
     Tensor<1, dim> start;
     Tensor<1, dim> row_velocity;
     double         row_time = 0;
+    /** A prescribed sphere in an explicit run: the impulse of the force on
+     * it since the last output step (a free sphere's is its momentum
+     * change). */
+    Tensor<1, dim> row_impulse;
     double         energy = 0, penetration = 0;
     unsigned int   n_contact = 0;
     /** Friction: the committed history per node, the last evaluation's

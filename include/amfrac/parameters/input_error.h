@@ -1,10 +1,22 @@
 #pragma once
 
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
 namespace amfrac
 {
+  /** A number for a message, in the shortest of fixed and scientific
+   * notation with 6 significant digits (std::to_string() writes 8.9e-9 as
+   * 0.000000). */
+  inline std::string
+  number_text(const double value)
+  {
+    std::ostringstream text;
+    text << value;
+    return text.str();
+  }
+
   /**
    * The one exception type for bad input. Its message always names the
    * parameter (as "Section/Entry") or the file that caused it, so that
