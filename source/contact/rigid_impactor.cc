@@ -109,9 +109,10 @@ namespace amfrac
     if (p.cylinder && dim == 3)
       for (unsigned int d = 0; d < dim; ++d)
         axis[d] = p.axis[d];
-    row_velocity     = velocity;
-    start            = center;
-    committed_center = center;
+    row_velocity        = velocity;
+    prescribed_velocity = velocity;
+    start               = center;
+    committed_center    = center;
     if (!p.path.empty())
       path = make_expression_function<dim>(p.path, 3, "", "Impactor/Path");
   }
@@ -124,7 +125,7 @@ namespace amfrac
   {
     if (!path)
       {
-        center = start + t * velocity;
+        center = start + t * prescribed_velocity;
         return;
       }
     path->set_time(t);
@@ -141,6 +142,13 @@ namespace amfrac
     Assert(prescribed && !static_mode, ExcInternalError());
     const Tensor<1, dim> before = center;
     move_to(t);
+    for (unsigned int d = 0; d < dim; ++d)
+      if (!std::isfinite(center[d]))
+        throw NonFiniteValue("parameter <Impactor/Path>: the striker's "
+                             "centre is not finite at t = "
+                             + number_text(t)
+                             + " s (a division by zero or the root of "
+                               "a negative number in the expression?)");
     const Tensor<1, dim> move = center - before;
     velocity                  = move / dt;
     return move;
@@ -634,7 +642,8 @@ namespace amfrac
     AssertThrow(values.size() == 6 * dim + 1 || values.size() == 4 * dim + 1,
                 ExcMessage("the checkpoint's impactor state has "
                            + std::to_string(values.size()) + " values, not "
-                           + std::to_string(6 * dim + 1)));
+                           + std::to_string(6 * dim + 1) + " (or "
+                           + std::to_string(4 * dim + 1) + " before stop 54)"));
     std::size_t k = 0;
     for (auto *t : {&center, &velocity, &acceleration, &row_velocity})
       for (unsigned int d = 0; d < dim; ++d)

@@ -789,8 +789,9 @@ namespace amfrac
     reading(restart->folder, comm, [&]() {
       const double dt = run.get_scalar("explicit.dt");
       if (dt != state.dt)
-        throw InputError("the checkpoint's time step is " + number_text(dt)
-                         + " s, these parameters give " + number_text(state.dt)
+        throw InputError("the checkpoint's time step is " + number_text(dt, 17)
+                         + " s, these parameters give "
+                         + number_text(state.dt, 17)
                          + " s: the Time subsection changed");
       state.steps          = run.get_integer("explicit.steps");
       state.strain_energy  = run.get_scalar("explicit.strain_energy");

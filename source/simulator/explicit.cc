@@ -744,7 +744,10 @@ namespace amfrac
           initial_energy += body_contact->contact_energy();
         if (impactor)
           {
-            if (impactor->penetration_depth() > 0)
+            // Touching is allowed, as in static runs: a sphere placed on
+            // the face may overlap it by the round-off of its centre.
+            if (impactor->penetration_depth()
+                > 1e-12 * parameters.impactor.radius)
               throw InputError(
                 "Impactor/Center",
                 "the impactor overlaps the laminate at t = 0 (by "
@@ -900,13 +903,13 @@ namespace amfrac
           // A prescribed sphere moves to where it is at t; it does the
           // work of its mean force over the move (as in static runs).
           Tensor<1, dim> sphere_move, sphere_force;
-          if (impactor && !free_sphere)
-            {
-              sphere_force = impactor->force_on_laminate();
-              sphere_move  = impactor->step_to(t, dt);
-            }
           try
             {
+              if (impactor && !free_sphere)
+                {
+                  sphere_force = impactor->force_on_laminate();
+                  sphere_move  = impactor->step_to(t, dt);
+                }
               impose_prescribed(t, solution);
               update_damping();
               evaluate(t);

@@ -16,13 +16,16 @@ namespace amfrac
     /** The impactor's springs on the copies of one cell (a corner of a cell
      * can become a fragment, as the cracks' bound assumes): 2 k_a / m_a
      * with k_a = @p penalty times the integral of N_a over the cell's face
-     * on @p boundary_id, m_a the cell's lumped mass. Collective. */
+     * on @p boundary_id, m_a the cell's lumped mass (k_a / m_a for a
+     * prescribed sphere, which is no unknown: @p coupling 1 instead of 2).
+     * Collective. */
     template <int dim, typename ElementMass>
     double
     impactor_copy_frequency_squared(const TiedCopyDoFs<dim> &dofs,
                                     const ElementMass       &element_mass,
                                     const unsigned int       boundary_id,
                                     const double             penalty,
+                                    const double             coupling,
                                     const MPI_Comm           comm)
     {
       const auto            &fe = dofs.get_fe();
@@ -48,7 +51,8 @@ namespace amfrac
                       area
                         += face_values.shape_value(a, q) * face_values.JxW(q);
                     if (mass(a) > 0)
-                      largest = std::max(largest, 2 * penalty * area / mass(a));
+                      largest = std::max(largest,
+                                         coupling * penalty * area / mass(a));
                   }
               }
       return Utilities::MPI::max(largest, comm);
@@ -93,6 +97,7 @@ namespace amfrac
                                              element_mass,
                                              sphere.boundary_id,
                                              stiffest * sphere.penalty,
+                                             sphere.prescribed ? 1. : 2.,
                                              comm);
   }
 

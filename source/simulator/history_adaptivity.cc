@@ -251,9 +251,17 @@ namespace amfrac
       // row's evaluation, committed); so is the sphere's.
       if (body_contact)
         friction_before = friction_force();
+      // With the friction dissipated so far: committing the stick
+      // springs at the transferred state may release some (a new node
+      // that takes a touching neighbour's spring but lies outside the
+      // sphere or off the face), which belongs to the mesh change.
       const auto contact_energies = [this]() {
-        return (body_contact ? body_contact->contact_energy() : 0.)
-               + (impactor ? impactor->contact_energy() : 0.);
+        return (body_contact ? body_contact->contact_energy()
+                                 + body_contact->friction_dissipation() :
+                               0.)
+               + (impactor ? impactor->contact_energy()
+                               + impactor->friction_dissipation() :
+                             0.);
       };
       const double stored_before
         = bulk_strain_energy(newton->converged_solution)

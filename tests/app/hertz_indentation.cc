@@ -264,15 +264,8 @@ namespace
   void
   cylinder_adaptive(const std::string &prm, const std::string &workdir)
   {
-    const std::string adaptive
-      = "subsection Geometry\n  set Region refinements = 6\nend\n"
-        "subsection Adaptivity\n  set Refine every = 1\n"
-        "  set Refine fraction = 0.05\n"
-        "  set Maximum refinement level = 8\nend\n";
-    const auto graded = amfrac_test::run_scene<2>(
-      prm, amfrac_test::history_only(workdir + "/graded"));
-    const auto adapted = amfrac_test::run_scene<2>(
-      prm, adaptive + amfrac_test::history_only(workdir + "/adaptive"));
+    const auto [graded, adapted]
+      = amfrac_test::graded_and_adapting(prm, workdir);
     const History &g = graded->history(), &a = adapted->history();
     const History *changes = adapted->adaptivity_history();
     CHECK(g.n_rows() == 10 && a.n_rows() == 10 && changes != nullptr);
@@ -289,16 +282,16 @@ namespace
       {
         const double F = g.value(r, "contact_force");
         if (F > 0.1 * last_F)
-          deviation = std::max(deviation,
-                               std::abs(a.value(r, "contact_force") / F - 1));
+          deviation
+            = amfrac_test::worse(deviation,
+                                 std::abs(a.value(r, "contact_force") / F - 1));
         // Hertz's peak pressure for the force per unit length of the
         // whole cylinder (the scene is a half model).
         const double p0
           = std::sqrt(2 * a.value(r, "contact_force") * Es / (M_PI * radius));
         if (r + 5 > last)
-          pressure
-            = std::max(pressure,
-                       std::abs(1e8 * a.value(r, "penetration") / p0 - 1));
+          pressure = amfrac_test::worse(
+            pressure, std::abs(1e8 * a.value(r, "penetration") / p0 - 1));
       }
     const double work = a.value(last, "external_work");
     std::cout << "adaptive: " << changes->n_rows() << " mesh changes, "

@@ -368,8 +368,9 @@ namespace
     double velocity_error = 0;
     for (std::size_t r = 1; r < p.n_rows(); ++r)
       velocity_error
-        = std::max(velocity_error,
-                   std::abs(p.value(r, "impactor_velocity") + striker_speed));
+        = amfrac_test::worse(velocity_error,
+                             std::abs(p.value(r, "impactor_velocity")
+                                      + striker_speed));
     const double work    = p.value(last, "external_work");
     const double balance = largest(p, "balance_error") / work;
     std::cout << "prescribed striker against a free one of 1 t: contact "

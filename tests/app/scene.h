@@ -16,6 +16,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <utility>
 
 namespace amfrac_test
 {
@@ -77,6 +78,24 @@ namespace amfrac_test
     simulator->run();
     return simulator;
   }
+  /** The 2D contact scene @p prm on its own graded mesh and on a mesh
+   * that adapts during the run (ZZ after every step, the 5 % of the cells
+   * with the largest error, from 6 region refinements up to 8 levels, as
+   * tests/app/hertz_cylinder_adaptive.prm), history only, in
+   * @p workdir/graded and @p workdir/adaptive. */
+  inline std::pair<std::unique_ptr<amfrac::Simulator<2>>,
+                   std::unique_ptr<amfrac::Simulator<2>>>
+  graded_and_adapting(const std::string &prm, const std::string &workdir)
+  {
+    const std::string adaptive
+      = "subsection Geometry\n  set Region refinements = 6\nend\n"
+        "subsection Adaptivity\n  set Refine every = 1\n"
+        "  set Refine fraction = 0.05\n"
+        "  set Maximum refinement level = 8\nend\n";
+    auto graded = run_scene<2>(prm, history_only(workdir + "/graded"));
+    return {std::move(graded),
+            run_scene<2>(prm, adaptive + history_only(workdir + "/adaptive"))};
+  }
   /** What every mesh change during a load history must keep (row @p r of
    * adaptivity.csv): the dissipated energy (1e-12, once there is some),
    * the debonded and damaged areas (never smaller), and the balance of the
@@ -93,6 +112,15 @@ namespace amfrac_test
     CHECK(value("debonded_after") >= value("debonded_before") - 1e-12);
     CHECK(value("damaged_after") >= value("damaged_before") - 1e-12);
     CHECK(value("interface_force_imbalance") < 1e-10);
+  }
+  /** The larger of @p a and @p b, NaN if either is (std::max(a, NaN) is
+   * a: a check "worse < tolerance" must fail on a NaN). */
+  inline double
+  worse(const double a, const double b)
+  {
+    if (std::isnan(a))
+      return a;
+    return b <= a ? a : b; // b if it is NaN
   }
   /** The largest magnitude of a column of a history; NaN if any value is
    * not a number (so that a check "largest < tolerance" fails). */

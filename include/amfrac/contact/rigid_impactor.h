@@ -458,6 +458,11 @@ namespace amfrac
     Tensor<1, dim> axis;
     /** Center at t = 0 (a prescribed sphere moves from it). */
     Tensor<1, dim> start;
+    /** A prescribed sphere without a Path moves with this velocity (the
+     * parameter; velocity is what it did in the last step, for the
+     * output: feeding that back would let round-off grow step by
+     * step). */
+    Tensor<1, dim> prescribed_velocity;
     Tensor<1, dim> row_velocity;
     double         row_time = 0;
     /** A prescribed sphere in an explicit run: the impulse of the force on

@@ -7,12 +7,13 @@
 namespace amfrac
 {
   /** A number for a message, in the shortest of fixed and scientific
-   * notation with 6 significant digits (std::to_string() writes 8.9e-9 as
-   * 0.000000). */
+   * notation with @p digits significant digits (std::to_string() writes
+   * 8.9e-9 as 0.000000; 17 digits tell any two doubles apart). */
   inline std::string
-  number_text(const double value)
+  number_text(const double value, const int digits = 6)
   {
     std::ostringstream text;
+    text.precision(digits);
     text << value;
     return text.str();
   }
