@@ -70,11 +70,14 @@
 //   load with total Lagrangian kinematics, see stack_finite_strain();
 // - stack_cracks: the stack with friction and crack insertion in the top
 //   ply (tests/app/contact_stack_cracks.prm), see stack_cracks().
+// - hairpin: prm/self_contact_hairpin_2d.prm, a strip folded into a U
+//   whose arms are pressed onto each other (contact of one body with
+//   itself), see hairpin().
 // - hanging: blocks with the top block's corner column refined once
 //   (tests/app/contact_hanging.prm), so that its contact surface has
 //   hanging nodes; see hanging().
 // usage: app_static_contact blocks|blocks_2d|shifted|friction|slide_far|stick|
-//        stick_adaptive|stick_refined|stack|stack_arc_length|
+//        stick_adaptive|stick_refined|stack|stack_arc_length|hairpin|
 //        stack_finite_strain
 //        SCENE.prm WORKDIR
 //        app_static_contact stack_cracks|hanging SCENE.prm APPENDED.prm
@@ -521,6 +524,37 @@ namespace
     CHECK(relative_balance(h) < 1e-4);
   }
 
+  /** prm/self_contact_hairpin_2d.prm: one body touching itself. Until
+   * the arms' gap closes (t <= 0.8) and once they part again (t >= 1.2)
+   * no node touches and no contact energy is stored; pressed (t = 1), the
+   * known answer of check_hairpin_pressed(); at most 6 Newton iterations
+   * per step (measured 5, in the step that closes the gap); back at the
+   * start (t = 2) the work's cycle closes to 1e-9 of the largest work
+   * (measured 8.9e-15: the contact is conservative; in the step that closes
+   * the gap the trapezoidal rule on a reaction that starts within it is
+   * 17 % of the work). */
+  void
+  hairpin(const std::string &scene, const std::string &workdir)
+  {
+    const auto simulator = amfrac_test::run_scene<2>(scene, output_to(workdir));
+    const History &h     = simulator->history();
+    CHECK(h.n_rows() == 10);
+    for (std::size_t r = 0; r < h.n_rows(); ++r)
+      if (r != 4)
+        {
+          CHECK(h.value(r, "body_contact_nodes") == 0);
+          CHECK(h.value(r, "body_contact_energy") == 0);
+        }
+    amfrac_test::check_hairpin_pressed(h, 4);
+    const double cycle = std::abs(h.value(h.n_rows() - 1, "balance_error"))
+                         / largest(h, "external_work");
+    std::cout << "hairpin: balance after the cycle " << cycle
+              << ", Newton iterations " << largest(h, "newton_iterations")
+              << std::endl;
+    CHECK(cycle < 1e-9);
+    CHECK(largest(h, "newton_iterations") <= 6);
+  }
+
   /** Column @p name of @p h at @p t, linear between the rows. */
   double
   at_time(const History &h, const std::string &name, const double t)
@@ -759,6 +793,8 @@ main(int argc, char **argv)
     slide_far(scene, workdir);
   else if (which == "stack")
     stack(scene, workdir);
+  else if (which == "hairpin")
+    hairpin(scene, workdir);
   else if (which == "stack_arc_length")
     stack_arc_length(scene, workdir);
   else if (which == "stack_finite_strain")
