@@ -80,6 +80,21 @@ namespace amfrac
         key[d] = p[d];
       return key;
     }
+
+    /** A prescribed centre that is not finite at @p t stops the run,
+     * naming the Path. */
+    template <int dim>
+    void
+    require_finite_centre(const Tensor<1, dim> &center, const double t)
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        if (!std::isfinite(center[d]))
+          throw NonFiniteValue("parameter <Impactor/Path>: the striker's "
+                               "centre is not finite at t = "
+                               + number_text(t)
+                               + " s (a division by zero or the root of "
+                                 "a negative number in the expression?)");
+    }
   } // namespace
 
 
@@ -114,7 +129,21 @@ namespace amfrac
     start               = center;
     committed_center    = center;
     if (!p.path.empty())
-      path = make_expression_function<dim>(p.path, 3, "", "Impactor/Path");
+      {
+        // The centre and the velocity at t = 0 are the Path's (Velocity
+        // is not used): its value and its slope over a nanosecond (the
+        // velocity of the first row; later rows have each step's mean).
+        path = make_expression_function<dim>(p.path, 3, "", "Impactor/Path");
+        const double h = 1e-9;
+        move_to(h);
+        require_finite_centre(center, h);
+        const Tensor<1, dim> later = center;
+        move_to(0);
+        require_finite_centre(center, 0.);
+        velocity         = (later - center) / h;
+        row_velocity     = velocity;
+        committed_center = center;
+      }
   }
 
 
@@ -142,13 +171,7 @@ namespace amfrac
     Assert(prescribed && !static_mode, ExcInternalError());
     const Tensor<1, dim> before = center;
     move_to(t);
-    for (unsigned int d = 0; d < dim; ++d)
-      if (!std::isfinite(center[d]))
-        throw NonFiniteValue("parameter <Impactor/Path>: the striker's "
-                             "centre is not finite at t = "
-                             + number_text(t)
-                             + " s (a division by zero or the root of "
-                               "a negative number in the expression?)");
+    require_finite_centre(center, t);
     const Tensor<1, dim> move = center - before;
     velocity                  = move / dt;
     return move;

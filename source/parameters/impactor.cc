@@ -111,7 +111,9 @@ namespace amfrac
         "run, the time [s] of an explicit one) separated by ';' "
         "(e.g. '0; 0; -min(t, 0.03)' presses the sphere 0.03 mm into a z+ "
         "face, then '0.5*max(t - 0.03, 0); 0; -min(t, 0.03)' also slides "
-        "it along x). Empty: Velocity t.");
+        "it along x). The centre is Center + Path(t) from t = 0 on (a "
+        "Path that is not zero at t = 0 starts the sphere off the "
+        "Center). Empty: Velocity t.");
       prm.declare_entry(
         "Friction coefficient",
         "0",

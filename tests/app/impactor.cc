@@ -48,7 +48,9 @@
 //   striker's work (its mean force times its move, external work)
 //   balances the plate's energy within 1e-4 of that work (measured
 //   1.9e-5, as the free heavy tup's balance against the energy it
-//   lost).
+//   lost). The same motion given as a Path that starts 1 mm off the
+//   Center (Center + Path(t), Path(0) = 1 mm, Velocity 0) gives the same
+//   history, the first row's velocity included (1e-9).
 // - cracks_2d: prm/impact_beam_2d.prm's first 120 us (a cylinder at 4 m/s
 //   on a cross-ply beam whose bottom 90-degree plies crack): at least 10
 //   crack faces inserted; at every insertion event the energy (with the
@@ -394,6 +396,29 @@ namespace
     CHECK(velocity_error < 1e-9 * striker_speed);
     CHECK(work > 0);
     CHECK(balance < 1e-4);
+
+    // The same motion as a Path that starts 1 mm off the Center (the
+    // centre is Center + Path(t) from t = 0 on, Velocity is not used).
+    const auto path = amfrac_test::run_scene<3>(
+      prm,
+      common
+        + "subsection Impactor\n  set Center = 0, 0, 9.001\n"
+          "  set Velocity = 0, 0, 0\n  set Path = 0; 0; 1 - 3000*t\nend\n"
+        + amfrac_test::history_only(workdir + "-path"));
+    const History &q    = path->history();
+    double         same = 0;
+    for (const char *column : {"contact_force",
+                               "mean_contact_force",
+                               "strain_energy",
+                               "p0_uz",
+                               "impactor_velocity",
+                               "external_work"})
+      same = amfrac_test::worse(same, relative_difference(q, p, column));
+    std::cout << "the same motion as a Path: largest difference " << same
+              << ", first row's velocity " << q.value(0, "impactor_velocity")
+              << " mm/s" << std::endl;
+    CHECK(q.n_rows() == p.n_rows());
+    CHECK(same < 1e-9);
   }
 
   /** The scene with its mid-plane released (@p unbonded appended): the
