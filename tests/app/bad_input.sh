@@ -620,6 +620,15 @@ end
 subsection Time
   set Time integration = explicit
 end"
+# Contact between the bodies and the impactor on prisms: not yet.
+expect prism_contact "Contact/Enable" "$base
+$prism
+$explicit
+$contact"
+expect prism_impactor "Impactor/Radius" "$base
+$prism
+$explicit
+$impactor"
 expect region_time "Geometry/Refinement region" "$base
 subsection Geometry
   set Refinement region = x < t
