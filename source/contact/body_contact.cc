@@ -552,6 +552,30 @@ namespace amfrac
     gather(u, displacements);
     for (std::size_t i = 0; i < nodes.size(); ++i)
       positions[i] = nodes[i].reference + displacements[i];
+    if (deformed_areas)
+      update_current_areas();
+  }
+
+
+
+  template <int dim>
+  void
+  BodyContact<dim>::update_current_areas()
+  {
+    // As setup() sums the undeformed ones, in the faces' order (the same
+    // sums on every rank).
+    for (Node &node : nodes)
+      node.current_area = Tensor<1, dim>();
+    for (const Face &face : faces)
+      {
+        std::array<Point<dim>, n_face_vertices> v;
+        for (unsigned int a = 0; a < n_face_vertices; ++a)
+          v[a] = positions[face.nodes[a]];
+        const Tensor<1, dim> n = normal(v, face_middle());
+        const double share = 0.5 * penalty * face_measure(v) / n_face_vertices;
+        for (unsigned int a = 0; a < n_face_vertices; ++a)
+          nodes[face.nodes[a]].current_area += share * face.sign * n;
+      }
   }
 
 
@@ -903,7 +927,7 @@ namespace amfrac
             // faces do not look at the face (a node that hangs at the
             // midpoint of an edge of the face's own cell lies half that
             // edge behind it, on a face at right angles to it).
-            const Tensor<1, dim> &facing = nodes[s].area_penalty;
+            const Tensor<1, dim> &facing = facing_area(s);
             if (!(gap < -1e-13 * face.depth && gap > -face.depth)
                 || !(facing * n < -1e-3 * facing.norm()))
               continue;
@@ -936,10 +960,9 @@ namespace amfrac
     double                dissipated = 0;
     for (Pair &pair : pairs)
       {
-        const Node    &node = nodes[pair.slave];
         const Face    &face = faces[pair.face];
         const auto     N    = shape_values(pair.xi);
-        const double   k    = -(node.area_penalty * pair.n);
+        const double   k    = -(facing_area(pair.slave) * pair.n);
         const double   p    = -k * pair.gap;
         Tensor<1, dim> f    = p * pair.n;
         energy += 0.5 * k * pair.gap * pair.gap;
@@ -1299,7 +1322,7 @@ namespace amfrac
 
     // The normal force and its gradients: dg = c_J n + dn^T r (x_,i . n
     // = 0), dk = -dn^T A.
-    const Tensor<1, dim>                 &A = nodes[pair.slave].area_penalty;
+    const Tensor<1, dim>                 &A = facing_area(pair.slave);
     const double                          k = -(A * n), g = pair.gap;
     std::array<Tensor<2, dim>, n_members> B; // df/du_J
     for (unsigned int J = 0; J < n_members; ++J)
@@ -1361,7 +1384,7 @@ namespace amfrac
     Assert(!h.carried, ExcInternalError());
     const Tensor<1, dim> old   = h.in_contact ? h.friction : Tensor<1, dim>();
     const Tensor<1, dim> slip  = P * w;
-    const double         k     = -(nodes[pair.slave].area_penalty * n);
+    const double         k     = -(facing_area(pair.slave) * n);
     const double         p     = -k * pair.gap;
     const double         size  = pair.trial.norm();
     const Tensor<1, dim> t     = size > 0 ? pair.trial / size : pair.trial;

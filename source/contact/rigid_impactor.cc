@@ -81,18 +81,21 @@ namespace amfrac
       return key;
     }
 
-    /** A prescribed centre that is not finite at @p t stops the run,
+    /** A prescribed centre that is not finite at @p t (a time in
+     * explicit runs, the load parameter in static ones) stops the run,
      * naming the Path. */
     template <int dim>
     void
-    require_finite_centre(const Tensor<1, dim> &center, const double t)
+    require_finite_centre(const Tensor<1, dim> &center,
+                          const double          t,
+                          const bool            static_mode)
     {
       for (unsigned int d = 0; d < dim; ++d)
         if (!std::isfinite(center[d]))
           throw NonFiniteValue("parameter <Impactor/Path>: the striker's "
                                "centre is not finite at t = "
-                               + number_text(t)
-                               + " s (a division by zero or the root of "
+                               + number_text(t) + (static_mode ? "" : " s")
+                               + " (a division by zero or the root of "
                                  "a negative number in the expression?)");
     }
   } // namespace
@@ -130,19 +133,28 @@ namespace amfrac
     committed_center    = center;
     if (!p.path.empty())
       {
-        // The centre and the velocity at t = 0 are the Path's (Velocity
-        // is not used): its value and its slope over a nanosecond (the
-        // velocity of the first row; later rows have each step's mean).
+        // The centre at t = 0 is Center + Path(0), and in explicit runs
+        // the velocity of the first row is the path's slope over a
+        // nanosecond (Velocity is not used; later rows have the last
+        // step's mean). The difference of the path's values, not of the
+        // centres: Center's round-off would be divided by the nanosecond.
         path = make_expression_function<dim>(p.path, 3, "", "Impactor/Path");
-        const double h = 1e-9;
-        move_to(h);
-        require_finite_centre(center, h);
-        const Tensor<1, dim> later = center;
         move_to(0);
-        require_finite_centre(center, 0.);
-        velocity         = (later - center) / h;
-        row_velocity     = velocity;
+        require_finite_centre(center, 0., static_mode);
         committed_center = center;
+        if (!static_mode)
+          {
+            const double h = 1e-9;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                path->set_time(h);
+                const double later = path->value(Point<dim>(), d);
+                path->set_time(0);
+                velocity[d] = (later - path->value(Point<dim>(), d)) / h;
+              }
+            require_finite_centre(velocity, h, false);
+            row_velocity = velocity;
+          }
       }
   }
 
@@ -171,7 +183,7 @@ namespace amfrac
     Assert(prescribed && !static_mode, ExcInternalError());
     const Tensor<1, dim> before = center;
     move_to(t);
-    require_finite_centre(center, t);
+    require_finite_centre(center, t, false);
     const Tensor<1, dim> move = center - before;
     velocity                  = move / dt;
     return move;

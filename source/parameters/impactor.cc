@@ -68,8 +68,9 @@ namespace amfrac
                         "0, 0, 7",
                         Patterns::List(Patterns::Double(), 3, 3),
                         "Position of the sphere's centre (a point of the "
-                        "cylinder's axis) at t = 0 [mm]; the impactor must "
-                        "not overlap the laminate then.");
+                        "cylinder's axis) at t = 0 [mm] (with a Path, "
+                        "Center + Path(0)); the impactor must not overlap "
+                        "the laminate then.");
       prm.declare_entry("Velocity",
                         "0, 0, -10000",
                         Patterns::List(Patterns::Double(), 3, 3),

@@ -175,6 +175,8 @@ namespace amfrac
       body_contact
         = std::make_unique<BodyContact<dim>>(parameters.contact, comm);
     body_contact->set_static();
+    if (parameters.total_lagrangian)
+      body_contact->set_deformed_areas();
     body_contact->setup(dof_layer,
                         released_faces(),
                         paired_faces(),

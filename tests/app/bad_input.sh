@@ -437,6 +437,26 @@ $prescribed
 subsection Impactor
   set Path = 0; 0; -t*(
 end"
+# A path that is not finite at t = 0 (static: the load parameter) or
+# just after it (explicit: the first row's velocity).
+expect impactor_path_infinite "centre is not finite at t = 0 (" "$base
+$impactor
+$prescribed
+subsection Boundary conditions
+  subsection z-
+    set Type = displacement
+  end
+end
+subsection Impactor
+  set Path = 0; 0; 1/t
+end"
+expect impactor_path_infinite_explicit "centre is not finite at t = 1e-09 s" "$base
+$impactor
+$prescribed
+$explicit
+subsection Impactor
+  set Path = 0; 0; 1/(t - 1e-9)
+end"
 expect impactor_guided_velocity "Impactor/Velocity" "$base
 $impactor
 $explicit
@@ -621,11 +641,11 @@ subsection Time
   set Time integration = explicit
 end"
 # Contact between the bodies and the impactor on prisms: not yet.
-expect prism_contact "Contact/Enable" "$base
+expect prism_contact "a prism mesh cannot be combined yet with Contact/Enable" "$base
 $prism
 $explicit
 $contact"
-expect prism_impactor "Impactor/Radius" "$base
+expect prism_impactor "a prism mesh cannot be combined yet with an impactor" "$base
 $prism
 $explicit
 $impactor"

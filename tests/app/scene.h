@@ -113,6 +113,7 @@ namespace amfrac_test
     CHECK(value("damaged_after") >= value("damaged_before") - 1e-12);
     CHECK(value("interface_force_imbalance") < 1e-10);
   }
+
   /** The arms of prm/self_contact_hairpin_2d.prm pressed onto each other
    * (row @p r of its history, d = 0.6 mm): at x = 5 mm, far from the bend
    * and the free ends, the arms and the contact are three springs in
@@ -125,16 +126,18 @@ namespace amfrac_test
   inline void
   check_hairpin_pressed(const amfrac::History &h, const std::size_t r)
   {
-    const double modulus = 70000, penalty = 5e5, thickness = 1, d = 0.6;
-    const double gap0  = 2 * (2.4 / M_PI - thickness / 2);
-    const double p     = (d - gap0) / (2 * thickness / modulus + 1 / penalty);
-    const double lower = h.value(r, "p0_uy"), upper = h.value(r, "p1_uy");
-    const double penetration = -(gap0 + upper - lower);
-    std::cout << std::setprecision(8) << "hairpin at t = " << h.value(r, "time")
-              << ": lower arm " << lower << " of " << -p * thickness / modulus
-              << ", stress " << h.value(r, "p0_stress_yy") << " of " << -p
-              << ", penetration " << penetration << " of " << p / penalty
-              << ", nodes " << h.value(r, "body_contact_nodes") << std::endl;
+    const double       modulus = 70000, penalty = 5e5, thickness = 1, d = 0.6;
+    const double       gap0 = 2 * (2.4 / M_PI - thickness / 2);
+    const double       p = (d - gap0) / (2 * thickness / modulus + 1 / penalty);
+    const double       lower = h.value(r, "p0_uy"), upper = h.value(r, "p1_uy");
+    const double       penetration = -(gap0 + upper - lower);
+    std::ostringstream line;
+    line << std::setprecision(8) << "hairpin at t = " << h.value(r, "time")
+         << ": lower arm " << lower << " of " << -p * thickness / modulus
+         << ", stress " << h.value(r, "p0_stress_yy") << " of " << -p
+         << ", penetration " << penetration << " of " << p / penalty
+         << ", nodes " << h.value(r, "body_contact_nodes");
+    std::cout << line.str() << std::endl;
     CHECK_CLOSE(lower,
                 -p * thickness / modulus,
                 1e-3 * p * thickness / modulus);
@@ -142,6 +145,7 @@ namespace amfrac_test
     CHECK_CLOSE(penetration, p / penalty, 1e-2 * p / penalty);
     CHECK(h.value(r, "body_contact_nodes") >= 40);
   }
+
   /** The larger of @p a and @p b, NaN if either is (std::max(a, NaN) is
    * a: a check "worse < tolerance" must fail on a NaN). */
   inline double

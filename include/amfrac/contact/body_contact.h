@@ -58,7 +58,10 @@ namespace amfrac
    * passes), each node with k = Penalty x area / 2, where area is its
    * share of the area of its faces projected on the contact normal, so
    * that matching meshes penetrate by pressure / Penalty; a node none of
-   * whose faces looks at a face is not in contact with it.
+   * whose faces looks at a face is not in contact with it. With finite
+   * strain the area and its direction are the current ones
+   * (set_deformed_areas()), so that a body that turns over or folds during
+   * the run touches what its faces now look at.
    * Friction: the tangential force grows with the tangential slip
    * increment relative to the face, k_t = factor x k, and is returned to
    * the Coulomb cone mu k |g|; the dissipation is the work of the
@@ -159,6 +162,20 @@ namespace amfrac
     void
     commit();
 
+    /** Finite strain (total Lagrangian runs): a node's area vector, which
+     * gives its penalty k = -area . n and says which faces it looks at,
+     * follows its faces as they turn and stretch (evaluated at every
+     * displacement) instead of staying the undeformed one. A body that
+     * folds or turns over then touches itself and others as it would
+     * unturned; with the undeformed vector a node turned by 90 degrees
+     * would look at no face. The vector's change is left out of the
+     * tangent, as the penalty's change with the face's normal is. */
+    void
+    set_deformed_areas()
+    {
+      deformed_areas = true;
+    }
+
     /** No pair now and none when the tangent was last factorized. */
     bool
     tangent_unchanged() const
@@ -235,6 +252,8 @@ namespace amfrac
        * face (a node on the edge of a block does not add the side face's
        * area to the contact of its top face). */
       Tensor<1, dim> area_penalty;
+      /** The same in the current configuration (set_deformed_areas()). */
+      Tensor<1, dim> current_area;
       double         stiffness = 0;
       /** (active cell index, vertex) of its first copy: partition- and
        * numbering-independent. */
@@ -332,6 +351,16 @@ namespace amfrac
     excluded(const unsigned int s, const Face &face) const;
     void
     gather_positions(const Vector &u);
+    /** Each node's current_area from the current positions. */
+    void
+    update_current_areas();
+    /** The area vector that node @p s presses with: the undeformed one,
+     * or the current one with set_deformed_areas(). */
+    const Tensor<1, dim> &
+    facing_area(const unsigned int s) const
+    {
+      return deformed_areas ? nodes[s].current_area : nodes[s].area_penalty;
+    }
     /** The owned entries of @p u at every surface node, gathered. */
     void
     gather(const Vector &u, std::vector<Tensor<1, dim>> &values);
@@ -470,7 +499,7 @@ namespace amfrac
     bool                      outdated = false, pairs_factorized = false;
     /** Static runs: the friction history and dissipation of the last
      * evaluation, kept by commit(). */
-    bool                 static_mode = false;
+    bool                 static_mode = false, deformed_areas = false;
     std::vector<History> trial_history;
     double               pending_dissipation = 0;
     /** Scratch of add_tangent_product(). */

@@ -456,7 +456,8 @@ namespace amfrac
     Tensor<1, dim>                 center, velocity, acceleration, force;
     /** A cylinder's unit axis (zero: a sphere, or the circle in 2D). */
     Tensor<1, dim> axis;
-    /** Center at t = 0 (a prescribed sphere moves from it). */
+    /** The parameter Center: a prescribed sphere is at start + Velocity t
+     * or start + Path(t). */
     Tensor<1, dim> start;
     /** A prescribed sphere without a Path moves with this velocity (the
      * parameter; velocity is what it did in the last step, for the
