@@ -3,6 +3,9 @@
 # compare the histories with numdiff (relative 1e-8; absolute ABSOLUTE,
 # default 1e-10, for round-off around zero); with FIELDS, check the field files too.
 #
+# COPY: a file copied next to the written scene (one that the scene names
+# relative to itself, such as a Geometry/Mesh file).
+#
 # STAGE splits the work in two ctest tests (amfrac_np1_equals_np2 in
 # CMakeLists.txt): "np1" writes the scene and runs it on one rank (a test
 # that takes one processor), "np2" runs it on two ranks and compares (a
@@ -27,6 +30,10 @@ elseif(APPEND)
   file(WRITE ${WORKDIR}/scene.prm "${scene}\n${extra}")
 else()
   file(WRITE ${WORKDIR}/scene.prm "${scene}")
+endif()
+# A file the scene names relative to itself (a Geometry/Mesh file).
+if(COPY)
+  file(COPY ${COPY} DESTINATION ${WORKDIR})
 endif()
 endif()
 if(STAGE STREQUAL "np1")

@@ -11,6 +11,7 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 namespace amfrac
@@ -31,6 +32,53 @@ namespace amfrac
       for (unsigned int k = 0; k < indices.size(); ++k)
         if (indices[k] >= begin && indices[k] < end)
           f(indices[k]) += values(k);
+    }
+
+
+
+    /** Adds to @p f the forces of the patch loads on @p face of @p cell at
+     * time @p t: nodal forces per unit force, from prepare_patch(). */
+    template <int dim, typename CellIterator>
+    void
+    add_patch_forces(const Loads<dim>       &loads,
+                     const CellIterator     &cell,
+                     const unsigned int      face,
+                     const double            t,
+                     dealii::Vector<double> &f)
+    {
+      for (const auto &patch : loads.patches)
+        {
+          const auto found
+            = patch.unit_nodal_forces.find({cell->active_cell_index(), face});
+          if (found == patch.unit_nodal_forces.end())
+            continue;
+          patch.force->set_time(t);
+          f.add(patch.force->value(Point<dim>()), found->second);
+        }
+    }
+
+
+
+    /** Rules fine enough to find where a patch edge crosses a face, one per
+     * face of @p shape: 2 x 2 Gauss points on 16 x 16 sub-squares of a
+     * quadrilateral, 3 points on 16 x 16 sub-triangles of a triangle. */
+    template <int dim>
+    hp::QCollection<dim - 1>
+    patch_face_rules(const ReferenceCell &shape)
+    {
+      const QIterated<dim - 1> squares(QGauss<1>(2), 16);
+      if (shape.is_hyper_cube())
+        return hp::QCollection<dim - 1>(squares);
+      hp::QCollection<dim - 1> rules;
+      if constexpr (dim == 3)
+        for (unsigned int f = 0; f < shape.n_faces(); ++f)
+          {
+            if (shape.face_reference_cell(f) == ReferenceCells::Triangle)
+              rules.push_back(QIteratedSimplex<2>(QGaussSimplex<2>(2), 16));
+            else
+              rules.push_back(squares);
+          }
+      return rules;
     }
   } // namespace
 
@@ -184,11 +232,11 @@ namespace amfrac
   ElasticAssembler<dim>::prepare_patch(PatchLoad<dim> &patch) const
   {
     const auto &fe = dofs.get_fe();
-    // 16 x 2 points per direction: the patch edge cuts a face to within a
-    // 32nd of its size; the normalization below makes the total exact.
+    // The patch edge cuts a face to within a 16th of its size (a 32nd on
+    // quadrilaterals); the normalization below makes the total exact.
     FEFaceValues<dim>      fv(dofs.get_mapping(),
                          fe,
-                         QIterated<dim - 1>(QGauss<1>(2), 16),
+                         patch_face_rules<dim>(dofs.reference_cell()),
                          update_values | update_quadrature_points
                            | update_normal_vectors | update_JxW_values);
     dealii::Vector<double> f(fe.n_dofs_per_cell());
@@ -318,19 +366,35 @@ namespace amfrac
   {
     f                                      = 0;
     const unsigned int                   n = dofs.get_fe().n_dofs_per_cell();
-    Scratch                              scratch(dofs, quadrature_degree);
     dealii::Vector<double>               cell_f(n);
     std::vector<types::global_dof_index> indices(n);
+    // Patch loads are stored nodal forces. FEValues, whose set-up costs
+    // several force evaluations on wedges (an explicit run assembles the
+    // load every step), only for the loads integrated here.
+    std::optional<Scratch> scratch;
+    if (loads.body_force || !loads.tractions.empty()
+        || !loads.pressures.empty())
+      scratch.emplace(dofs, quadrature_degree);
     // A load expression that is not defined at t (a sqrt of a negative
     // number) must stop the run with its name, on every rank together.
     bool       finite = true;
     Point<dim> where;
     for (const auto &cell : cells)
       {
-        if (loads.body_force)
-          scratch.fe_values.reinit(cell);
         dofs.get_dof_indices(cell, indices);
-        cell_load(scratch, cell, loads, t, cell_f);
+        if (scratch)
+          {
+            if (loads.body_force)
+              scratch->fe_values.reinit(cell);
+            cell_load(*scratch, cell, loads, t, cell_f);
+          }
+        else
+          {
+            cell_f = 0;
+            for (const unsigned int face : cell->face_indices())
+              if (cell->at_boundary(face))
+                add_patch_forces(loads, cell, face, t, cell_f);
+          }
         if (std::all_of(cell_f.begin(), cell_f.end(), [](const double v) {
               return std::isfinite(v);
             }))
@@ -408,15 +472,7 @@ namespace amfrac
             || !loads.on_face(cell->face(face)->boundary_id()))
           continue;
         const auto id = cell->face(face)->boundary_id();
-        for (const auto &patch : loads.patches)
-          {
-            const auto found
-              = patch.unit_nodal_forces.find({cell->active_cell_index(), face});
-            if (found == patch.unit_nodal_forces.end())
-              continue;
-            patch.force->set_time(t);
-            f.add(patch.force->value(Point<dim>()), found->second);
-          }
+        add_patch_forces(loads, cell, face, t, f);
         if (!loads.tractions.count(id) && !loads.pressures.count(id))
           continue;
         auto &fv = scratch.face_values;

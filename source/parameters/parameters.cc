@@ -630,7 +630,8 @@ namespace amfrac
                         "Face of the laminate box that carries a patch "
                         "load: a total force spread uniformly over a "
                         "circle or rectangle on it (an impact pulse, an "
-                        "indenter). none: no patch load.");
+                        "indenter). With a Geometry/Mesh file: z- or z+. "
+                        "none: no patch load.");
       prm.declare_entry("Shape",
                         "circle",
                         Patterns::Selection("circle|rectangle"),
@@ -1727,9 +1728,6 @@ namespace amfrac
              "without its geometry cannot be remeshed: give the .geo)");
       // Ply interfaces are the triangles between the layers of wedges.
       const bool interfaces = !cohesive.interfaces.empty();
-      refuse(interfaces && time.explicit_dynamics,
-             "Cohesive interfaces/Interfaces in an explicit run (not tested "
-             "on prisms yet)");
       if (interfaces && cohesive.lobatto && discretization.degree > 1)
         throw InputError("Cohesive interfaces/Quadrature",
                          "lobatto (nodal) integration needs Finite element "
@@ -1750,9 +1748,6 @@ namespace amfrac
       refuse(output.write_xdmf,
              "Output/Field format = xdmf or vtu+xdmf (deal.II 9.4 writes "
              "wedges into XDMF as tetrahedra); use vtu");
-      refuse(!boundary_conditions.patch.face.empty(),
-             "a Boundary conditions/Patch load (its fine face rule is for "
-             "quadrilateral faces)");
       refuse(time.explicit_dynamics && time.mass_scaling_step > 0,
              "Time/Mass scaling time step > 0");
     }
@@ -1776,8 +1771,12 @@ namespace amfrac
              "a Geometry/Hole radius (a hole belongs in the mesh file)");
       refuse(geometry.mesh_distortion > 0,
              "a Geometry/Mesh distortion (it is for the box mesh)");
-      refuse(!boundary_conditions.patch.face.empty(),
-             "a Boundary conditions/Patch load (it is placed on the box)");
+      // The bottom and the top are planes of the extrusion; the sides are
+      // whatever curves the file names x-, x+, y-, y+.
+      const std::string &patch_face = boundary_conditions.patch.face;
+      refuse(!patch_face.empty() && patch_face[0] != 'z',
+             "a Boundary conditions/Patch load on a side face (Face = z- or "
+             "z+ only: the sides of a mesh file need not be planes)");
     }
 
 

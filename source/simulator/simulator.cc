@@ -14,6 +14,29 @@
 
 namespace amfrac
 {
+  namespace
+  {
+    /** Throws an InputError naming the face's Type if @p mesh has no
+     * boundary face of @p id: a condition there would act on nothing (a
+     * Geometry/Mesh file without a physical curve of that name). */
+    template <int dim>
+    void
+    require_boundary_face(const Triangulation<dim> &mesh,
+                          const types::boundary_id  id,
+                          const std::string        &name)
+    {
+      for (const auto &face : mesh.active_face_iterators())
+        if (face->at_boundary() && face->boundary_id() == id)
+          return;
+      throw InputError("Boundary conditions/" + name + "/Type",
+                       "the laminate has no face named '" + name
+                         + "' (the sides of a Geometry/Mesh file are its "
+                           "physical curves named x-, x+, y-, y+)");
+    }
+  } // namespace
+
+
+
   template <int dim>
   typename TiedCopyDoFs<dim>::FaceFilter
   Simulator<dim>::paired_faces() const
@@ -221,6 +244,8 @@ namespace amfrac
         const parameters::BoundaryFace &face = bc.faces[id];
         const std::string path = "Boundary conditions/" + face.name + "/";
         using Type             = parameters::BoundaryFace::Type;
+        if (face.type != Type::free)
+          require_boundary_face(triangulation, id, face.name);
         // A displacement face may carry a load on its free components as
         // well (an edge held in z and compressed in x).
         const bool supported = face.type == Type::displacement;

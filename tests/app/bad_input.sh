@@ -621,9 +621,9 @@ prism='subsection Geometry
 end'
 expect prism_2d "Geometry/Element shape" "$(with 'set Dimension = 3' 'set Dimension = 2')
 $prism"
-# Interfaces on prisms: P2 needs Gauss points; no explicit runs with them
-# yet (refinement cycles and adaptivity during the history are refused for
-# any interface scene and for any prism scene).
+# Interfaces on prisms: P2 needs Gauss points (refinement cycles and
+# adaptivity during the history are refused for any interface scene and for
+# any prism scene).
 expect prism_cohesive_lobatto_p2 "Cohesive interfaces/Quadrature" "$base
 $prism
 subsection Discretization
@@ -632,13 +632,11 @@ end
 subsection Cohesive interfaces
   set Interfaces = all
 end"
-expect prism_cohesive_explicit "Cohesive interfaces/Interfaces in an explicit run" "$base
+expect prism_explicit_p2 "Finite element degree = 2" "$base
 $prism
-subsection Cohesive interfaces
-  set Interfaces = all
-end
-subsection Time
-  set Time integration = explicit
+$explicit
+subsection Discretization
+  set Finite element degree = 2
 end"
 # Contact between the bodies and the impactor on prisms: not yet.
 expect prism_contact "a prism mesh cannot be combined yet with Contact/Enable" "$base
@@ -749,6 +747,21 @@ expect mesh_file_edge_grading "Geometry/Edge grading" "$base
 $(mesh square_quads.geo '  set Edge grading = 4')"
 expect mesh_file_hole "a hole belongs in the mesh file" "$base
 $(mesh square.geo '  set Hole radius = 0.1')"
+# A condition on a side that the file does not name (no physical curves).
+expect mesh_file_missing_side "Boundary conditions/x-/Type" "$base
+$(mesh square.geo '  set Element shape = prism')
+subsection Boundary conditions
+  subsection x-
+    set Type = displacement
+  end
+end"
+expect mesh_file_patch_side "Patch load on a side face" "$base
+$(mesh square.geo)
+subsection Boundary conditions
+  subsection Patch load
+    set Face = x-
+  end
+end"
 expect prism_adaptivity_msh "cannot be remeshed: give the .geo" "$base
 $(mesh plate.msh '  set Element shape = prism')
 subsection Adaptivity

@@ -26,6 +26,12 @@
 //   critical step, estimate <= critical <= 2 estimate); stability_contact:
 //   the same for pressed blocks whose contact penalty sets the step
 //   (prm/contact_blocks.prm, estimate <= critical <= 2.5 estimate).
+// - bar_prism, stability_prism(_interfaces): the bar and the stable step
+//   on P1 wedges (the plate with and without its cohesive interfaces);
+//   impact_prism: the impact's checks on wedges, and with the hexahedral
+//   run's history its work (5 %) and delaminations (10 %); the dissipation
+//   never decreases (at Safety factor 0.5: chattering contact at the
+//   default 0.8 gives some back on this coarse wedge mesh).
 // - damping: Rayleigh mass damping against the decay law, with the damping
 //   work in the ledger, stiffness damping shortening the stable step,
 //   mass scaling to a target step.
@@ -261,24 +267,40 @@ namespace
    * closed form 1/2 s delta S of the bilinear law (delta the largest
    * effective separation, on the softening line where the secant
    * (1 - S) E meets it). */
+  /** The coarse wedge impact below chatters at the default Safety factor
+   * 0.8: damaged points cross in and out of compression, where the
+   * penalty's kink makes the central difference gain energy. Interface 5
+   * gave back a fifth of its dissipation (8.91 -> 7.20 N mm; its points'
+   * states imply 9.74 N mm), with bonded points at negative work. The
+   * largest loss of interface 5's dissipation from one output step to the
+   * next, relative to its final value: 1.2e-3 at 0.7, 3.3e-3 at 0.6,
+   * 2.7e-4 at 0.5 and 0.4, 1.9e-4 at 0.2 (8.913 to 8.916 N mm from 0.5
+   * down). */
+  const std::string chatter_free_safety = "  set Safety factor = 0.5\n";
+
   void
   impact(const std::string &prm,
          const std::string &workdir,
-         const std::string &reference)
+         const std::string &reference,
+         const bool         prisms = false)
   {
     const double G = 0.5, ply_thickness = 0.25, strength = 60, E = 5e6;
     const double g0 = strength / E, g_max = 2 * G / strength;
-    // Lobatto points of the Q1 faces of 1.5 mm: each weighs a quarter face.
-    const double weight     = 1.5 * 1.5 / 4;
+    // Lobatto points of the faces of 1.5 mm: each weighs a quarter of a
+    // square, or a third of a triangle (half a square) on wedges.
+    const double weight     = prisms ? 1.5 * 1.5 / 6 : 1.5 * 1.5 / 4;
     const auto   parameters = parameters::Parameters::from_string(read(
       prm,
       "subsection Geometry\n  set Elements along length = 20\n"
-        "  set Elements along width = 20\nend\n"
-        "subsection Cohesive interfaces\n  set Shear strength = 60\n"
-        "  set Mode I fracture energy = 0.5\n"
-        "  set Mode II fracture energy = 0.5\nend\n"
-        "subsection Time\n  set End time = 3e-5\n  set Number of steps = 15\n"
-        "end\nsubsection Output\n  set Write every = 15\n  set Directory = "
+        "  set Elements along width = 20\n"
+        + std::string(prisms ? "  set Element shape = prism\n" : "")
+        + "end\n"
+            "subsection Cohesive interfaces\n  set Shear strength = 60\n"
+            "  set Mode I fracture energy = 0.5\n"
+            "  set Mode II fracture energy = 0.5\nend\n"
+            "subsection Time\n  set End time = 3e-5\n  set Number of steps = 15\n"
+        + std::string(prisms ? chatter_free_safety : "")
+        + "end\nsubsection Output\n  set Write every = 15\n  set Directory = "
         + workdir + "\nend\n"));
     Simulator<3> simulator(parameters, MPI_COMM_WORLD);
     simulator.run();
@@ -292,6 +314,12 @@ namespace
         const double debonded   = h.value(last, "debonded_i" + k);
         const double damaged    = h.value(last, "damaged_i" + k);
         CHECK(debonded > 5);
+        // Dissipated energy never goes back (more than round-off): on
+        // wedges at the default step, chattering contact of damaged points
+        // gave back a fifth of interface 5's.
+        for (std::size_t r = 1; prisms && r < h.n_rows(); ++r)
+          CHECK(h.value(r, "dissipated_i" + k)
+                >= h.value(r - 1, "dissipated_i" + k) - 1e-3 * dissipated);
         CHECK(dissipated >= G * debonded * 0.999);
         CHECK(dissipated <= G * damaged * 1.001);
         double fracture_energy = 0, debonded_points = 0;
@@ -328,7 +356,31 @@ namespace
     // chattering in and out of contact amplify any round-off: before the
     // force sums were made partition-independent the runs drifted apart
     // to 5e-4 at 10 us and about 1 % at 30 us.
-    if (!reference.empty())
+    // Wedges against hexahedra on the same nodes (the hexahedral run's
+    // history): the work (the wedges' in-plane interpolation is linear:
+    // 2.2 % less) within 5 %; the delaminations, which the two
+    // discretizations resolve differently at 1.5 mm, within 10 %.
+    if (prisms && !reference.empty())
+      {
+        const auto expected = read_csv(reference);
+        const auto final    = [&](const std::string &column) {
+          return expected.at(column).back();
+        };
+        CHECK(expected.at("time").size() == h.n_rows());
+        CHECK_CLOSE(h.value(last, "external_work"),
+                    final("external_work"),
+                    0.05 * final("external_work"));
+        for (const std::string column :
+             {"dissipated_i1", "dissipated_i5", "debonded_i1", "debonded_i5"})
+          {
+            std::cout << column << ": wedges " << h.value(last, column)
+                      << ", hexahedra " << final(column) << std::endl;
+            CHECK_CLOSE(h.value(last, column),
+                        final(column),
+                        0.1 * final(column));
+          }
+      }
+    else if (!reference.empty())
       {
         const auto expected = read_csv(reference);
         CHECK(expected.size() > 30);
@@ -615,7 +667,8 @@ main(int argc, char **argv)
     {
       std::cerr << "usage: app_explicit_dynamics "
                    "bar|dcb|impact|vibration|damping|stability|bar_prism|"
-                   "stability_prism|stability_contact SCENE.prm "
+                   "stability_prism|stability_prism_interfaces|impact_prism|"
+                   "stability_contact SCENE.prm "
                    "WORKDIR "
                    "[REFERENCE.csv]\n";
       return 2;
@@ -627,6 +680,8 @@ main(int argc, char **argv)
     dcb(argv[2], argv[3]);
   else if (mode == "impact")
     impact(argv[2], argv[3], argc == 5 ? argv[4] : "");
+  else if (mode == "impact_prism")
+    impact(argv[2], argv[3], argc == 5 ? argv[4] : "", true);
   else if (mode == "vibration")
     vibration(argv[2], argv[3]);
   else if (mode == "damping")
@@ -639,6 +694,8 @@ main(int argc, char **argv)
     bar(argv[2], argv[3], prism_bar);
   else if (mode == "stability_prism")
     stability(plate_scene(argv[2], argv[3], false, prism_plate));
+  else if (mode == "stability_prism_interfaces")
+    stability(plate_scene(argv[2], argv[3], true, prism_plate));
   else
     {
       std::cerr << "unknown mode " << mode << std::endl;
