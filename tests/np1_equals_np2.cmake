@@ -44,8 +44,14 @@ elseif(STAGE STREQUAL "np2")
   # Not a one-rank run of an older amfrac or scene (ctest -FS, or the
   # script run by hand).
   set(np1_history ${WORKDIR}/np1/output/history.csv)
+  set(copy_newer FALSE)
+  if(COPY)
+    if("${COPY}" IS_NEWER_THAN ${np1_history})
+      set(copy_newer TRUE)
+    endif()
+  endif()
   if(NOT EXISTS ${np1_history} OR ${AMFRAC} IS_NEWER_THAN ${np1_history}
-      OR ${PRM} IS_NEWER_THAN ${np1_history})
+      OR ${PRM} IS_NEWER_THAN ${np1_history} OR copy_newer)
     message(FATAL_ERROR "no one-rank run in ${WORKDIR}/np1 newer than "
       "amfrac and the scene (run its np1 stage)")
   endif()

@@ -13,6 +13,7 @@
 #include <limits>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 
 namespace amfrac
 {
@@ -59,9 +60,10 @@ namespace amfrac
 
 
 
-    /** Rules fine enough to find where a patch edge crosses a face, one per
-     * face of @p shape: 2 x 2 Gauss points on 16 x 16 sub-squares of a
-     * quadrilateral, 3 points on 16 x 16 sub-triangles of a triangle. */
+    /** Rules fine enough to find where a patch edge crosses a face: 2 x 2
+     * Gauss points on 16 x 16 sub-squares of a quadrilateral, 3 points on
+     * 16 x 16 sub-triangles of a triangle (one rule for hypercube cells,
+     * one per face of a wedge). */
     template <int dim>
     hp::QCollection<dim - 1>
     patch_face_rules(const ReferenceCell &shape)
@@ -78,6 +80,8 @@ namespace amfrac
             else
               rules.push_back(squares);
           }
+      else
+        throw std::logic_error("patch loads: 2D cells are squares");
       return rules;
     }
   } // namespace
@@ -368,9 +372,9 @@ namespace amfrac
     const unsigned int                   n = dofs.get_fe().n_dofs_per_cell();
     dealii::Vector<double>               cell_f(n);
     std::vector<types::global_dof_index> indices(n);
-    // Patch loads are stored nodal forces. FEValues, whose set-up costs
-    // several force evaluations on wedges (an explicit run assembles the
-    // load every step), only for the loads integrated here.
+    // Patch loads are stored nodal forces and need no FEValues, whose
+    // set-up on wedges costs several force evaluations: an explicit run
+    // assembles the load every step.
     std::optional<Scratch> scratch;
     if (loads.body_force || !loads.tractions.empty()
         || !loads.pressures.empty())

@@ -165,7 +165,8 @@ namespace amfrac
         "shape = prism), its quadrilaterals into hexahedra (Element shape "
         "= hexahedron); a mesh of both is refused. Physical curves named "
         "x-, x+, y-, y+ are the faces of those names in Boundary "
-        "conditions, the bottom and top of the laminate are z- and z+; "
+        "conditions (a condition on a side the file does not name is an "
+        "input error), the bottom and top of the laminate are z- and z+; "
         "every other curve (a hole, a notch) is traction free (boundary "
         "id 6). Length, Width and Elements along length/width are not "
         "used.");

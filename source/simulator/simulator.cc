@@ -18,7 +18,8 @@ namespace amfrac
   {
     /** Throws an InputError naming the face's Type if @p mesh has no
      * boundary face of @p id: a condition there would act on nothing (a
-     * Geometry/Mesh file without a physical curve of that name). */
+     * Geometry/Mesh file without a physical curve of that name). Checked
+     * once: a remeshing meshes the same file, with the same names. */
     template <int dim>
     void
     require_boundary_face(const Triangulation<dim> &mesh,

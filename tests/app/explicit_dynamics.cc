@@ -260,14 +260,7 @@ namespace
     return double(debonded) / (width * height);
   }
 
-  /** The coarse variant of prm/impact_plate.prm: 1.5 mm elements, 30 us,
-   * one mode-independent law (strength s, penalty E, fracture energy G),
-   * so that the energy each interface dissipates must be G times its
-   * debonded area plus, at each point still softening with damage S, the
-   * closed form 1/2 s delta S of the bilinear law (delta the largest
-   * effective separation, on the softening line where the secant
-   * (1 - S) E meets it). */
-  /** The coarse wedge impact below chatters at the default Safety factor
+  /** The coarse wedge impact of impact() chatters at the default Safety factor
    * 0.8: damaged points cross in and out of compression, where the
    * penalty's kink makes the central difference gain energy. Interface 5
    * gave back a fifth of its dissipation (8.91 -> 7.20 N mm; its points'
@@ -278,6 +271,14 @@ namespace
    * down). */
   const std::string chatter_free_safety = "  set Safety factor = 0.5\n";
 
+  /** The coarse variant of prm/impact_plate.prm: 1.5 mm elements, 30 us,
+   * one mode-independent law (strength s, penalty E, fracture energy G),
+   * so that the energy each interface dissipates must be G times its
+   * debonded area plus, at each point still softening with damage S, the
+   * closed form 1/2 s delta S of the bilinear law (delta the largest
+   * effective separation, on the softening line where the secant
+   * (1 - S) E meets it). With @p prisms on wedges, at
+   * chatter_free_safety. */
   void
   impact(const std::string &prm,
          const std::string &workdir,

@@ -110,10 +110,12 @@ main(int argc, char *argv[])
         {
           CHECK(true_errors[c] < true_errors[c - 1]);
           CHECK(value("transfer_energy_change") < 0.03);
-          // The energy carried to the new mesh differs from the old
-          // mesh's by less than the old mesh's discretization error: by
-          // Galerkin orthogonality the relative energy error is the
-          // square of the relative energy-norm error, ZZ's estimate.
+          // The criterion: the energy carried to the new mesh
+          // differs from the old mesh's by less than the old mesh's
+          // discretization error. In energy that error is the square of
+          // the relative energy-norm error (Galerkin orthogonality), which
+          // ZZ estimates; (2 + c) c bounds the relative energy change for
+          // an energy-norm change c.
           const double change = value("transfer_energy_change");
           CHECK((2 + change) * change
                 < std::pow(value("zz_relative_before_remeshing"), 2));
