@@ -291,6 +291,7 @@ namespace amfrac
     element.assembled.resize(n_q);
     element.factorized.resize(n_q);
     element.status.resize(n_q, 0);
+    element.pre_crack.resize(n_q, 0);
     return element;
   }
 
@@ -331,10 +332,11 @@ namespace amfrac
             ++cracked;
             // Fully debonded from the start, with nothing dissipated: the
             // pre-crack is not part of the energy ledger.
-            auto &history    = element.converged[q].history;
-            history.kappa    = std::numeric_limits<double>::max();
-            history.debonded = true;
-            element.trial[q] = element.converged[q];
+            auto &history        = element.converged[q].history;
+            history.kappa        = std::numeric_limits<double>::max();
+            history.debonded     = true;
+            element.trial[q]     = element.converged[q];
+            element.pre_crack[q] = 1;
           }
       }
     cracked    = Utilities::MPI::sum(cracked, comm);

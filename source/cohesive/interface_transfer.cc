@@ -2,6 +2,7 @@
 // (the process-zone rule), refinement flags that keep both sides of an
 // interface conforming, and the transfer of the interface history to the
 // new mesh (the seed's tau_1 with an injection / max rule for damage).
+#include <algorithm>
 #include <amfrac/cohesive/interface_assembler.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -213,14 +214,15 @@ namespace amfrac
   typename CohesiveInterfaces<dim>::Snapshot
   CohesiveInterfaces<dim>::snapshot(const MPI_Comm comm) const
   {
-    // Flat records: coarse cell, face, box (lower and upper corner per
-    // axis), number of points, then per point its reference position, JxW
-    // and state.
+    // Flat records: coarse cell, face, interface, box (lower and upper
+    // corner per axis), number of points, then per point its reference
+    // position, its position in space, the pre-crack flag, JxW and state.
     std::vector<double> local;
     for (const Element &element : elements)
       {
         local.push_back(element.coarse_cell);
         local.push_back(element.face);
+        local.push_back(element.interface);
         for (unsigned int d = 0; d < dim; ++d)
           {
             local.push_back(element.box.first[d]);
@@ -231,18 +233,25 @@ namespace amfrac
           {
             for (unsigned int d = 0; d < dim; ++d)
               local.push_back(element.unit_points[q][d]);
+            for (unsigned int d = 0; d < dim; ++d)
+              local.push_back(element.points[q][d]);
+            local.push_back(element.pre_crack[q]);
             local.push_back(element.JxW[q]);
             pack(element.converged[q], local);
           }
       }
-    Snapshot result;
+    // In the order of (coarse cell, face, box), whatever the ranks: the
+    // searches of relocate() and its sums then see the same sequence.
+    using Key = std::pair<types::coarse_cell_id, std::vector<double>>;
+    std::vector<std::pair<Key, typename Snapshot::Face>> faces;
     for (const auto &part : Utilities::MPI::all_gather(comm, local))
       for (std::size_t i = 0; i < part.size();)
         {
           const auto coarse_cell
             = static_cast<types::coarse_cell_id>(part[i++]);
           typename Snapshot::Face face;
-          face.face = static_cast<unsigned int>(part[i++]);
+          face.face      = static_cast<unsigned int>(part[i++]);
+          face.interface = static_cast<unsigned int>(part[i++]);
           for (unsigned int d = 0; d < dim; ++d)
             {
               face.box.first[d]  = part[i++];
@@ -255,15 +264,31 @@ namespace amfrac
               for (unsigned int d = 0; d < dim; ++d)
                 p[d] = part[i++];
               face.unit_points.push_back(p);
+              for (unsigned int d = 0; d < dim; ++d)
+                p[d] = part[i++];
+              face.points.push_back(p);
+              face.pre_crack.push_back(part[i++] != 0);
               face.JxW.push_back(part[i++]);
               face.states.insert(face.states.end(),
                                  part.begin() + i,
                                  part.begin() + i + state_size());
               i += state_size();
             }
-          result.index[{coarse_cell, face.face}].push_back(result.faces.size());
-          result.faces.push_back(std::move(face));
+          Key key{coarse_cell, {double(face.face)}};
+          for (unsigned int d = 0; d < dim; ++d)
+            key.second.insert(key.second.end(),
+                              {face.box.first[d], face.box.second[d]});
+          faces.emplace_back(std::move(key), std::move(face));
         }
+    std::sort(faces.begin(), faces.end(), [](const auto &a, const auto &b) {
+      return a.first < b.first;
+    });
+    Snapshot result;
+    for (auto &[key, face] : faces)
+      {
+        result.index[{key.first, face.face}].push_back(result.faces.size());
+        result.faces.push_back(std::move(face));
+      }
     return result;
   }
 
@@ -393,14 +418,10 @@ namespace amfrac
                 continue;
               const PointState s
                 = unpack(source->states.data() + j * state_size());
-              const double stored = stored_energy(s);
-              fracture
-                += w
-                   * (s.history.debonded ? s.bond_work : s.bond_work - stored);
-              friction += w
-                          * (s.history.debonded ? s.friction_work - stored :
-                                                  s.friction_work);
-              viscous += w * s.viscous_work;
+              const auto densities = dissipated_densities(s);
+              fracture += w * densities[0];
+              friction += w * densities[1];
+              viscous += w * densities[2];
               const double rank = (s.history.debonded ? 2. : 0.) + damage(s);
               if (rank > worst)
                 worst = rank, merged = s;
@@ -469,12 +490,42 @@ namespace amfrac
 
 
   template <int dim>
+  std::array<double, 3>
+  CohesiveInterfaces<dim>::dissipated_densities(const PointState &s) const
+  {
+    const double stored = stored_energy(s);
+    return {s.history.debonded ? s.bond_work : s.bond_work - stored,
+            s.history.debonded ? s.friction_work - stored : s.friction_work,
+            s.viscous_work};
+  }
+
+
+
+  template <int dim>
   typename CohesiveInterfaces<dim>::TransferReport
   CohesiveInterfaces<dim>::transfer(const Snapshot &old,
                                     const Vector   &solution,
                                     const MPI_Comm  comm)
   {
     TransferReport report;
+    finish_transfer(
+      [&](Element &element) { transfer_element(element, old, report); },
+      solution,
+      comm,
+      report);
+    return report;
+  }
+
+
+
+  template <int dim>
+  void
+  CohesiveInterfaces<dim>::finish_transfer(
+    const std::function<void(Element &)> &carry,
+    const Vector                         &solution,
+    const MPI_Comm                        comm,
+    TransferReport                       &report)
+  {
     Tensor<1, dim> net_force;
     double         force_sum = 0;
     for (Element &element : elements)
@@ -482,7 +533,7 @@ namespace amfrac
         // setup() has put the pre-crack in: a point inside it stays
         // debonded whatever its old neighbours were.
         const std::vector<PointState> seeded = element.converged;
-        transfer_element(element, old, report);
+        carry(element);
         // (A point that was debonded already keeps its friction state; a
         // newly seeded one starts without stick stretch.)
         for (unsigned int q = 0; q < seeded.size(); ++q)
@@ -526,7 +577,6 @@ namespace amfrac
       net_force[d] = Utilities::MPI::sum(net_force[d], comm);
     force_sum              = Utilities::MPI::sum(force_sum, comm);
     report.force_imbalance = force_sum > 0 ? net_force.norm() / force_sum : 0;
-    return report;
   }
 
   template <int dim>

@@ -105,11 +105,13 @@ namespace amfrac
         "instead of refining (deal.II cannot refine wedges). Prisms take "
         "linear static scenes (adaptive ones by global remeshing with "
         "Gmsh, see Adaptivity/Refinement cycles), cohesive ply "
-        "interfaces on the Newton path (triangular interface faces; not "
-        "with remeshing or explicit runs yet) and explicit runs with "
-        "Finite element degree = 1, with VTU output, without crack "
-        "insertion, contact, an impactor, a patch load, buckling, total "
-        "Lagrangian kinematics or a Refinement region so far. With a Hole "
+        "interfaces (triangular interface faces) on the Newton path, "
+        "where a load history is remeshed when Adaptivity/Error "
+        "threshold or Refine every fires, and in explicit runs with "
+        "Finite element degree = 1 (not remeshed), patch loads, with "
+        "VTU output, without crack insertion, contact, an impactor, "
+        "buckling, total Lagrangian kinematics or a Refinement region so "
+        "far. With a Hole "
         "radius the in-plane mesh is Gmsh's (unstructured triangles, see "
         "Elements around hole) and P2 wedges map the hole as a circle; a "
         "Mesh file brings its own.");
@@ -1696,12 +1698,22 @@ namespace amfrac
              "Dimension = 2 (prisms are the 3D extrusion of triangles)");
       refuse(!geometry.refinement_region.empty(),
              "a Geometry/Refinement region (deal.II cannot refine wedges)");
-      // Wedges adapt by global remeshing between the cycles of a static
-      // run (deal.II cannot refine them).
-      refuse(adaptivity.during_history(),
-             "Adaptivity/Refine every, Error threshold or Process zone "
-             "elements (prisms are remeshed between Refinement cycles; "
-             "remeshing during a load history is not implemented yet)");
+      // Wedges adapt by global remeshing (deal.II cannot refine them):
+      // between the cycles of a static run, or when the estimator's
+      // triggers fire during the load history of a Newton run.
+      refuse(adaptivity.process_zone_elements > 0,
+             "Adaptivity/Process zone elements (the size field of a "
+             "remeshing comes from the ZZ estimate: use Refine every or "
+             "Error threshold)");
+      refuse(adaptivity.during_history() && time.explicit_dynamics,
+             "Adaptivity/Refine every or Error threshold in an explicit "
+             "run (prisms are remeshed during the load history of "
+             "Time integration = static runs only so far)");
+      refuse(adaptivity.during_history() && checkpoint.by_count_or_stop(),
+             "Adaptivity/Refine every or Error threshold with "
+             "Checkpoint/Every n steps or Stop after step (a checkpoint "
+             "replays refinements of the first mesh, and a remeshed mesh "
+             "is none)");
       refuse(adaptivity.active()
                && adaptivity.estimator == Adaptivity::Estimator::kelly,
              "Adaptivity/Estimator = kelly (prisms are remeshed by the ZZ "
@@ -2312,8 +2324,9 @@ namespace amfrac
                         "Strategy and refine after every this many "
                         "converged load steps (explicit: output steps, "
                         "rows of history.csv), moving the state to the new "
-                        "mesh (0: never). Explicit runs then choose a new "
-                        "stable step.");
+                        "mesh (0: never; prisms are remeshed, in Newton "
+                        "runs). Explicit runs then choose a new stable "
+                        "step.");
       prm.declare_entry("Error threshold",
                         "0",
                         Patterns::Double(0, 1),
@@ -2321,7 +2334,14 @@ namespace amfrac
                         "insertion, and explicit runs: also refine after a "
                         "converged step (explicit: an output step) whose "
                         "relative ZZ error exceeds this (the seed's "
-                        "criterion; 0: off).");
+                        "criterion; 0: off). Prisms (Newton runs) are "
+                        "remeshed instead, to the size field of Strategy "
+                        "= error target or uniform; if the first estimate "
+                        "on a new mesh is not a tenth below the error that "
+                        "made it (the size bounds stop the remeshing from "
+                        "reaching Target error), the next remeshing waits "
+                        "until the error has grown by a tenth beyond that "
+                        "estimate.");
       prm.declare_entry("Process zone elements",
                         "0",
                         Patterns::Integer(0, 100),

@@ -100,14 +100,11 @@ namespace amfrac
       {
         // The remeshing that made this cycle's mesh (zeros on the first).
         const auto &event = last_remeshing;
-        row.insert(row.end(),
-                   {{"zz_relative_before_remeshing", event.zz_relative_before},
-                    {"predicted_cells", event.predicted_cells},
-                    {"smallest_size", event.smallest_size},
-                    {"remesh_seconds", event.mesh_seconds},
-                    {"transfer_seconds", event.transfer_seconds},
-                    {"transfer_energy_change", event.energy_change},
-                    {"transfer_points_outside", event.outside}});
+        row.emplace_back("zz_relative_before_remeshing",
+                         event.zz_relative_before);
+        const auto columns = event.columns();
+        row.insert(row.end(), columns.begin(), columns.end());
+        row.emplace_back("transfer_energy_change", event.energy_change);
       }
     for (const auto &entry : last_row)
       if (entry.first != "step" && entry.first != "cycle")

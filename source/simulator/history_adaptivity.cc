@@ -176,9 +176,29 @@ namespace amfrac
         relevant_solution = state;
         estimate_error(t);
         zz_relative = last_zz.relative();
-        by_estimate
-          = by_estimate
-            || (a.error_threshold > 0 && zz_relative > a.error_threshold);
+        bool over   = a.error_threshold > 0 && zz_relative > a.error_threshold;
+        // The first estimate on a remeshed mesh is what the remeshing
+        // reached. If that is not a tenth below the error before it (the
+        // size bounds keep the error above the threshold), the threshold
+        // fires again only once the error has grown by a tenth, so that the
+        // mesh and the history are not moved every step for nothing.
+        if (remeshes())
+          {
+            double &reached = last_remeshing.zz_relative_reached;
+            if (std::isnan(reached))
+              reached = zz_relative;
+            if (reached >= 0
+                && reached > 0.9 * last_remeshing.zz_relative_before)
+              over = over && zz_relative > 1.1 * reached;
+          }
+        by_estimate = by_estimate || over;
+      }
+    // Wedges are remeshed by the estimate's size field, not flagged.
+    if (remeshes())
+      {
+        if (by_estimate && !cell_budget_spent)
+          change(true, zz_relative);
+        return;
       }
     // The process-zone rule refines one level per pass until the fronts
     // have their elements; every pass moves the state.
@@ -269,25 +289,45 @@ namespace amfrac
       typename CohesiveInterfaces<dim>::Snapshot snapshot;
       if (interfaces)
         snapshot = interfaces->snapshot(comm);
-      dealii::Vector<double> copies;
+      dealii::Vector<double> copies, new_copies;
       dof_layer.expand_all(dof_layer.replicate(newton->converged_solution),
                            copies);
-      SolutionTransfer<dim, dealii::Vector<double>> displacement(
-        dof_layer.copy_handler());
-      displacement.prepare_for_coarsening_and_refinement(copies);
-      const auto plastic_history = prepare_plastic_transfer();
-      if (plasticity)
-        kappa_before = plasticity->max_kappa();
-      execute_mesh_change();
-      setup_after_refinement();
-      if (interfaces)
-        interfaces->setup(dof_layer, parameters.boundary_conditions.constants);
-      dealii::Vector<double> new_copies(dof_layer.n_copies());
-      displacement.interpolate(copies, new_copies);
-      if (plasticity)
+      if (remeshes())
         {
-          plasticity->set_field(plastic_history->interpolate());
-          kappa_after = plasticity->max_kappa();
+          // (Plastic plies are refused on prisms.)
+          if (!remesh_carrying(copies, new_copies))
+            {
+              cell_budget_spent = true;
+              pcout << "  the mesh has " << triangulation.n_active_cells()
+                    << " cells, about Adaptivity/Maximum cells: no more "
+                       "remeshing in this run"
+                    << std::endl;
+              return;
+            }
+          if (interfaces)
+            interfaces->setup(dof_layer,
+                              parameters.boundary_conditions.constants);
+        }
+      else
+        {
+          SolutionTransfer<dim, dealii::Vector<double>> displacement(
+            dof_layer.copy_handler());
+          displacement.prepare_for_coarsening_and_refinement(copies);
+          const auto plastic_history = prepare_plastic_transfer();
+          if (plasticity)
+            kappa_before = plasticity->max_kappa();
+          execute_mesh_change();
+          setup_after_refinement();
+          if (interfaces)
+            interfaces->setup(dof_layer,
+                              parameters.boundary_conditions.constants);
+          new_copies.reinit(dof_layer.n_copies());
+          displacement.interpolate(copies, new_copies);
+          if (plasticity)
+            {
+              plasticity->set_field(plastic_history->interpolate());
+              kappa_after = plasticity->max_kappa();
+            }
         }
 
       // A new Newton state on the new mesh (with the run's totals).
@@ -300,7 +340,12 @@ namespace amfrac
       constraints.distribute(newton->converged_solution);
       relevant_solution = newton->converged_solution;
       if (interfaces)
-        report = interfaces->transfer(snapshot, relevant_solution, comm);
+        report = remeshes() ?
+                   interfaces->relocate(snapshot,
+                                        triangulation,
+                                        relevant_solution,
+                                        comm) :
+                   interfaces->transfer(snapshot, relevant_solution, comm);
       solution = newton->converged_solution;
       // copy_solution() follows the mesh.
       dof_layer.expand(relevant_solution, copy_values);
@@ -351,6 +396,13 @@ namespace amfrac
       {
         const auto transfer = interface_transfer_columns(before, after, report);
         columns.insert(columns.end(), transfer.begin(), transfer.end());
+      }
+    if (remeshes())
+      {
+        const auto event_columns = last_remeshing.columns();
+        columns.insert(columns.end(),
+                       event_columns.begin(),
+                       event_columns.end());
       }
     if (plasticity)
       {

@@ -2,6 +2,7 @@
 #include <amfrac/adaptivity/remeshing.h>
 #include <amfrac/simulator/simulator.h>
 #include <deal.II/base/function.h>
+#include <limits>
 #include <stdexcept>
 
 namespace amfrac
@@ -40,6 +41,43 @@ namespace amfrac
   bool
   Simulator<dim>::remesh()
   {
+    dealii::Vector<double> copies, carried;
+    dof_layer.expand_all(error_estimator().replicate(relevant_solution),
+                         copies);
+    const double old_norm = last_zz.solution_norm;
+    if (!remesh_carrying(copies, carried))
+      {
+        pcout << "  the mesh has " << triangulation.n_active_cells()
+              << " cells, about Adaptivity/Maximum cells: the cycles stop"
+              << std::endl;
+        return false;
+      }
+    first_guess.reinit(dof_layer.locally_owned_dofs(), comm);
+    dof_layer.gather(carried, first_guess);
+
+    Vector relevant(dof_layer.locally_owned_dofs(),
+                    dof_layer.locally_relevant_dofs(),
+                    comm);
+    relevant               = first_guess;
+    const auto   estimator = error_estimator();
+    const double moved_norm
+      = estimator.energy_error(estimator.replicate(relevant),
+                               Functions::ZeroFunction<dim>(dim));
+    auto &event = last_remeshing;
+    event.energy_change
+      = old_norm > 0 ? std::abs(moved_norm / old_norm - 1) : 0;
+    pcout << "  remeshed: the energy norm of the carried solution differs by "
+          << event.energy_change << std::endl;
+    return true;
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::remesh_carrying(const dealii::Vector<double> &copies,
+                                  dealii::Vector<double>       &carried)
+  {
     // The size field lives in the plane of a 3D laminate.
     if constexpr (dim != 3)
       throw std::logic_error("remeshing is for 3D prism meshes");
@@ -48,6 +86,7 @@ namespace amfrac
         const auto    &adaptivity = parameters.adaptivity;
         RemeshingEvent event;
         event.zz_relative_before     = last_zz.relative();
+        event.zz_relative_reached    = std::numeric_limits<double>::quiet_NaN();
         const unsigned int old_cells = triangulation.n_active_cells();
 
         // The size field: every cell's size by the seed's rule, or halved.
@@ -74,13 +113,7 @@ namespace amfrac
             && event.predicted_cells > adaptivity.max_cells)
           {
             if (old_cells >= 0.9 * adaptivity.max_cells)
-              {
-                pcout
-                  << "  the mesh has " << old_cells
-                  << " cells, about Adaptivity/Maximum cells: the cycles stop"
-                  << std::endl;
-                return false;
-              }
+              return false;
             field.scale(
               std::sqrt(event.predicted_cells / adaptivity.max_cells));
             event.predicted_cells = adaptivity.max_cells;
@@ -95,12 +128,8 @@ namespace amfrac
                                     dof_layer.get_fe().degree,
                                     dof_layer.reference_cell());
         old_layer.distribute();
-        dealii::Vector<double> copies;
-        dof_layer.expand_all(error_estimator().replicate(relevant_solution),
-                             copies);
         const dealii::Vector<double> old_copies
           = copies_on(dof_layer, copies, old_layer);
-        const double old_norm = last_zz.solution_norm;
 
         {
           TimerOutput::Scope scope(timer, "remesh (Gmsh)");
@@ -118,32 +147,18 @@ namespace amfrac
         {
           TimerOutput::Scope             scope(timer, "transfer");
           const NonMatchingTransfer<dim> transfer(old_layer, dof_layer);
-          first_guess.reinit(dof_layer.locally_owned_dofs(), comm);
-          dof_layer.gather(transfer.nodal(old_copies), first_guess);
+          carried       = transfer.nodal(old_copies);
           event.outside = transfer.n_outside();
         }
         event.transfer_seconds = watch.wall_time();
-
-        Vector relevant(dof_layer.locally_owned_dofs(),
-                        dof_layer.locally_relevant_dofs(),
-                        comm);
-        relevant               = first_guess;
-        const auto   estimator = error_estimator();
-        const double moved_norm
-          = estimator.energy_error(estimator.replicate(relevant),
-                                   Functions::ZeroFunction<dim>(dim));
-        event.energy_change
-          = old_norm > 0 ? std::abs(moved_norm / old_norm - 1) : 0;
-        last_remeshing = event;
+        last_remeshing         = event;
         pcout << "  remeshed: " << old_cells << " -> "
               << triangulation.n_global_active_cells() << " cells (predicted "
               << static_cast<unsigned long>(event.predicted_cells)
               << "), smallest size " << event.smallest_size
               << " mm; Gmsh and setup " << event.mesh_seconds << " s, transfer "
               << event.transfer_seconds << " s (" << event.outside
-              << " points outside the old mesh); energy norm of the carried "
-                 "solution differs by "
-              << event.energy_change << std::endl;
+              << " points outside the old mesh)" << std::endl;
         return true;
       }
   }

@@ -621,9 +621,7 @@ prism='subsection Geometry
 end'
 expect prism_2d "Geometry/Element shape" "$(with 'set Dimension = 3' 'set Dimension = 2')
 $prism"
-# Interfaces on prisms: P2 needs Gauss points (refinement cycles and
-# adaptivity during the history are refused for any interface scene and for
-# any prism scene).
+# Interfaces on prisms: P2 needs Gauss points.
 expect prism_cohesive_lobatto_p2 "Cohesive interfaces/Quadrature" "$base
 $prism
 subsection Discretization
@@ -680,11 +678,33 @@ subsection Adaptivity
   set Strategy = uniform
   set Estimator = kelly
 end"
-expect prism_adaptivity_history "remeshing during a load history" "$base
+# Remeshing during a load history: Newton runs with the estimator's
+# triggers only, so far.
+expect prism_adaptivity_history "Error threshold in an explicit run" "$base
 $prism
 $explicit
 subsection Adaptivity
   set Refine every = 2
+end"
+expect prism_adaptivity_process_zone "Adaptivity/Process zone elements (the size field" "$base
+$prism
+subsection Cohesive interfaces
+  set Interfaces = all
+end
+subsection Adaptivity
+  set Process zone elements = 2
+end"
+expect prism_remeshing_checkpoint "a remeshed mesh is none" "$base
+$prism
+subsection Cohesive interfaces
+  set Interfaces = all
+end
+subsection Adaptivity
+  set Refine every = 2
+  set Strategy = error target
+end
+subsection Checkpoint
+  set Every n steps = 1
 end"
 expect adaptivity_max_cells "Maximum cells" "$base
 subsection Adaptivity

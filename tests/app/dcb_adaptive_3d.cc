@@ -55,13 +55,9 @@ main(int argc, char *argv[])
                             .get_triangulation()
                             .active_cell_iterators())
     {
-      double lowest = 1e300, highest = -1e300;
-      for (const unsigned int v : cell->vertex_indices())
-        {
-          lowest  = std::min(lowest, cell->vertex(v)[2]);
-          highest = std::max(highest, cell->vertex(v)[2]);
-        }
-      in_plane = in_plane && std::abs(highest - lowest - ply) < 1e-9 * ply;
+      in_plane
+        = in_plane
+          && std::abs(amfrac_test::thickness_extent(cell) - ply) < 1e-9 * ply;
       ++cells;
     }
   amfrac_test::check(in_plane,
@@ -69,13 +65,8 @@ main(int argc, char *argv[])
                      __FILE__,
                      __LINE__);
 
-  const History    &h         = simulator.history();
-  const std::size_t last      = h.n_rows() - 1;
-  const double      width     = prm.geometry.width;
-  const double      growth    = h.value(last, "debonded_i0") / width - 30;
-  const double      work      = h.value(last, "external_work");
-  const double      balance   = h.value(last, "balance_error") / work;
-  const double      remeshing = h.value(last, "remeshing_energy") / work;
+  const auto [growth, balance, remeshing]
+    = amfrac_test::dcb_totals(simulator.history(), prm.geometry.width);
   std::cout << "crack growth " << growth << " mm, balance error / external "
             << "work " << balance << ", remeshing energy / external work "
             << remeshing << ", " << cells << " cells at the end" << std::endl;

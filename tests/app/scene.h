@@ -96,6 +96,37 @@ namespace amfrac_test
     return {std::move(graded),
             run_scene<2>(prm, adaptive + history_only(workdir + "/adaptive"))};
   }
+  /** The extent of @p cell through the thickness (z). */
+  template <typename Cell>
+  double
+  thickness_extent(const Cell &cell)
+  {
+    double lowest = 1e300, highest = -1e300;
+    for (const unsigned int v : cell->vertex_indices())
+      {
+        lowest  = std::min(lowest, cell->vertex(v)[2]);
+        highest = std::max(highest, cell->vertex(v)[2]);
+      }
+    return highest - lowest;
+  }
+
+  /** A 3D DCB strip's totals at the last row of its history @p h: crack
+   * growth beyond the 30 mm pre-crack of a strip @p width wide [mm], and
+   * the balance error and the remeshing energy over the external work. */
+  struct DcbTotals
+  {
+    double growth, balance, remeshing;
+  };
+  inline DcbTotals
+  dcb_totals(const amfrac::History &h, const double width)
+  {
+    const std::size_t last = h.n_rows() - 1;
+    const double      work = h.value(last, "external_work");
+    return {h.value(last, "debonded_i0") / width - 30,
+            h.value(last, "balance_error") / work,
+            h.value(last, "remeshing_energy") / work};
+  }
+
   /** What every mesh change during a load history must keep (row @p r of
    * adaptivity.csv): the dissipated energy (1e-12, once there is some),
    * the debonded and damaged areas (never smaller), and the balance of the

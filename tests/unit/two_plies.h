@@ -7,10 +7,12 @@
 #include <amfrac/assembly/elastic_assembler.h>
 #include <amfrac/dofs/tied_copy_dofs.h>
 #include <amfrac/material/orthotropic.h>
+#include <array>
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -133,6 +135,48 @@ namespace amfrac_test
                   dofs.locally_relevant_dofs(),
                   MPI_COMM_WORLD,
                   true);
+    return result;
+  }
+
+  /** The dofs of each node (one entry per component), and the ply of
+   * the node (the interface's nodes are duplicated: one copy per ply). */
+  template <int dim>
+  std::map<std::array<types::global_dof_index, dim>, unsigned int>
+  nodes(const TiedCopyDoFs<dim> &dofs)
+  {
+    std::map<std::array<types::global_dof_index, dim>, unsigned int> result;
+    const auto                          &fe = dofs.get_fe();
+    std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
+    for (const auto &cell : dofs.copy_handler().active_cell_iterators())
+      {
+        cell->get_dof_indices(local);
+        std::map<unsigned int, std::array<types::global_dof_index, dim>> node;
+        for (unsigned int i = 0; i < local.size(); ++i)
+          {
+            const auto [c, n] = fe.system_to_component_index(i);
+            node[n][c]        = dofs.reduced_index(local[i]);
+          }
+        for (const auto &[n, indices] : node)
+          result[indices] = cell->material_id();
+      }
+    return result;
+  }
+
+  /** A vector of nodal values @p value(X, ply). */
+  template <int dim, typename Function>
+  TrilinosWrappers::MPI::Vector
+  nodal_vector(const TiedCopyDoFs<dim> &dofs, const Function &value)
+  {
+    TrilinosWrappers::MPI::Vector result(dofs.locally_owned_dofs(),
+                                         MPI_COMM_WORLD);
+    for (const auto &[indices, ply] : nodes(dofs))
+      {
+        const Point<dim>     X = dofs.support_point(indices[0]);
+        const Tensor<1, dim> v = value(X, ply);
+        for (unsigned int c = 0; c < dim; ++c)
+          result(indices[c]) = v[c];
+      }
+    result.compress(VectorOperation::insert);
     return result;
   }
 

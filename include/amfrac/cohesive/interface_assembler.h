@@ -18,6 +18,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <functional>
 #include <map>
+#include <optional>
 #include <set>
 #include <vector>
 
@@ -387,8 +388,11 @@ namespace amfrac
       struct Face
       {
         unsigned int                      face;
+        unsigned int                      interface;   ///< as Element's
         std::pair<Point<dim>, Point<dim>> box;         ///< as Element::box
         std::vector<Point<dim>>           unit_points; ///< in the lower cell
+        std::vector<Point<dim>>           points;      ///< in space
+        std::vector<unsigned char>        pre_crack;   ///< as Element's
         std::vector<double>               JxW;
         std::vector<double> states; ///< packed, state_size() per point
       };
@@ -430,6 +434,34 @@ namespace amfrac
      */
     TransferReport
     transfer(const Snapshot &old, const Vector &solution, const MPI_Comm comm);
+
+    /**
+     * The seed's tau_1 for interface history across a global remeshing
+     * (the old and the new mesh unrelated), after setup() on the new mesh
+     * @p mesh: every point is located on the interface surface by its
+     * position, on its own interface.
+     * - A new point takes the state of the nearest old point (the old
+     *   history read as constant around each old point). The pre-crack is
+     *   input that setup() has seeded by position: a new point outside it
+     *   looks only at old points outside it.
+     * - An old point that no new point is nearest to (a coarser new mesh)
+     *   joins the nearest point outside the pre-crack of the new face it
+     *   lies in, and a point with several sources takes the most damaged
+     *   one's state: the largest damage and a debonded status survive any
+     *   mesh. Old pre-crack points never join.
+     * - The densities of dissipated work are the JxW-weighted means of the
+     *   sources', scaled per interface so that the dissipated energies
+     *   are kept exactly (unless a total is round-off of the law).
+     * Gap and traction are then those of @p solution, as in transfer().
+     * The report counts as injected the points with one source and as
+     * aggregated those with more. The result does not depend on the
+     * number of ranks.
+     */
+    TransferReport
+    relocate(const Snapshot           &old,
+             const Triangulation<dim> &mesh,
+             const Vector             &solution,
+             const MPI_Comm            comm);
 
     /** Checkpoint: per element of this rank, the lower cell (CellId in
      * binary, 4 numbers), its face and its number of points into @p keys;
@@ -514,6 +546,9 @@ namespace amfrac
       /** Contact status of debonded points at the last assemble() with a
        * tangent: 0 open, 1 sticking, 2 slipping. */
       std::vector<unsigned char> status;
+      /** Per point: 1 if setup() seeded it as the Pre-crack region (input,
+       * which a law may overwrite in the history, e.g. kappa). */
+      std::vector<unsigned char> pre_crack;
       /** Explicit dynamics: local indices of dofs, and per point q the
        * nonzero shape values (local dof k, value) in
        * nonzero[start[q] .. start[q + 1]). */
@@ -622,6 +657,40 @@ namespace amfrac
     /** Gap and traction of the converged states at @p solution. */
     void
     rebase(Element &element, const Vector &solution, TransferReport &report);
+
+    /** The part of transfer() and relocate() after the history: @p carry
+     * sets an element's converged states, then the pre-crack is seeded
+     * again, the states are rebased on @p solution and the balance of the
+     * interface forces is measured into @p report, whose counters are
+     * then summed over the ranks. */
+    void
+    finish_transfer(const std::function<void(Element &)> &carry,
+                    const Vector                         &solution,
+                    const MPI_Comm                        comm,
+                    TransferReport                       &report);
+
+    /** relocate(): the old points @p sources that no new point is
+     * nearest to (@p taken is 0), but not the pre-crack's, added to the
+     * sources @p from (per element and point) of the nearest point outside
+     * the pre-crack of the new face they lie in (of any rank if they lie
+     * in none); then every list sorted, without repeats. */
+    template <typename Source>
+    void
+    place_left_over(const Triangulation<dim>        &mesh,
+                    const std::vector<Source>       &sources,
+                    const std::vector<unsigned int> &taken,
+                    std::vector<std::vector<std::vector<unsigned int>>> &from,
+                    const MPI_Comm comm) const;
+
+    /** The point of @p element outside the pre-crack nearest to @p p, if
+     * it has one. */
+    std::optional<unsigned int>
+    nearest_outside(const Element &element, const Point<dim> &p) const;
+
+    /** Densities of what a point dissipated (fracture, friction,
+     * viscous), per area; rebase() adds what a new gap stores. */
+    std::array<double, 3>
+    dissipated_densities(const PointState &state) const;
 
     void
     check_conforming(const DoFHandler<dim> &handler) const;

@@ -374,8 +374,10 @@ namespace amfrac
     unsigned int buckling_analyses  = 0;
     std::size_t  next_analysis_time = 0;
     Timer        clock;
-    /** Global remeshing (prisms): the last event, reported with the next
-     * cycle, and the solution carried to the new mesh (tau_2), the first
+    /** Global remeshing (prisms): the last event (reported with the next
+     * cycle, or in the row of a remeshing during a load history), whether
+     * Adaptivity/Maximum cells stopped the remeshing during a load
+     * history, and the solution carried to the new mesh (tau_2), the first
      * guess of the next solve. */
     struct RemeshingEvent
     {
@@ -388,8 +390,25 @@ namespace amfrac
        * the old mesh. */
       double       energy_change = 0;
       unsigned int outside       = 0;
+      /** During a load history: the relative ZZ error of the first
+       * estimate on the new mesh (what the remeshing reached), NaN until
+       * then; -1 before the first remeshing. */
+      double zz_relative_reached = -1;
+
+      /** The columns of adaptivity.csv common to a cycle's and a load
+       * history's remeshing. */
+      std::vector<std::pair<std::string, double>>
+      columns() const
+      {
+        return {{"predicted_cells", predicted_cells},
+                {"smallest_size", smallest_size},
+                {"remesh_seconds", mesh_seconds},
+                {"transfer_seconds", transfer_seconds},
+                {"transfer_points_outside", double(outside)}};
+      }
     };
     RemeshingEvent last_remeshing;
+    bool           cell_budget_spent = false;
     Vector         first_guess;
 
     /** Checkpoints: the store (nullptr for refinement cycles, which
@@ -575,6 +594,16 @@ namespace amfrac
      * cell budget is spent. */
     bool
     remesh();
+    /** The mesh change of remesh(), between cycles and during a load
+     * history: the new mesh from Gmsh for the last estimate's size field,
+     * the DoF layer rebuilt on it and @p copies (the copy values of every
+     * cell of the old layer, TiedCopyDoFs::expand_all()) carried to the
+     * copies of the new layer (tau_2) into @p carried; fills
+     * last_remeshing but its energy change. False, with nothing changed,
+     * if the cell budget (Adaptivity/Maximum cells) is spent. */
+    bool
+    remesh_carrying(const dealii::Vector<double> &copies,
+                    dealii::Vector<double>       &carried);
     /** Whether the mesh adapts by global remeshing (wedges). */
     bool
     remeshes() const
@@ -604,7 +633,8 @@ namespace amfrac
      * process-zone rule asks for a change after step @p step at @p t; if
      * so, flags the cells and calls @p change(by_estimate, zz_relative),
      * which must execute the flags and move the state (repeatedly for
-     * the process-zone rule, one level per call). */
+     * the process-zone rule, one level per call). A wedge mesh is not
+     * flagged: @p change remeshes it (remesh_carrying()). */
     void
     adapt_state(const unsigned int                                   step,
                 const double                                         t,
@@ -639,7 +669,11 @@ namespace amfrac
     process_zone_lengths() const;
     /** Execute the flags and move the converged Newton state at @p t:
      * displacement by SolutionTransfer on the copy layer (tau_2),
-     * interface history by CohesiveInterfaces::transfer() (tau_1).
+     * interface history by CohesiveInterfaces::transfer() (tau_1). A
+     * wedge mesh is remeshed instead (remesh_carrying(): displacement by
+     * NonMatchingTransfer, interface history by
+     * CohesiveInterfaces::relocate()); nothing changes once the cell
+     * budget is spent.
      * adaptivity.csv logs what asked for the change: @p by_estimate
      * (Refine every or Error threshold) and the relative ZZ error of the
      * converged state if it was estimated (-1 otherwise). */
