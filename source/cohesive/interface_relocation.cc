@@ -2,6 +2,7 @@
 // mesh's interface points carried to the points of an unrelated new mesh
 // by their positions on the interface surface (the seed's tau_1 for the
 // interfaces, with a rule that never lowers damage).
+#include <amfrac/base/point_order.h>
 #include <amfrac/cohesive/interface_assembler.h>
 #include <boost/geometry/index/rtree.hpp>
 #include <deal.II/base/mpi.h>
@@ -41,19 +42,6 @@ namespace amfrac
       if (v.size() == 3)
         return in_triangle(v[0], v[1], v[2]);
       return in_triangle(v[0], v[1], v[3]) || in_triangle(v[0], v[3], v[2]);
-    }
-
-    /** Lexicographic order of positions: equally near points are told
-     * apart by where they are, not by the order of the ranks' data, so
-     * that any number of ranks makes the same choice. */
-    template <int dim>
-    bool
-    before(const Point<dim> &a, const Point<dim> &b)
-    {
-      for (unsigned int d = 0; d < dim; ++d)
-        if (a[d] != b[d])
-          return a[d] < b[d];
-      return false;
     }
   } // namespace
 
@@ -140,7 +128,8 @@ namespace amfrac
               {
                 taken[j]            = 1;
                 const Point<dim> &b = sources[best].position();
-                if (before(p, b) || (!before(b, p) && j < best))
+                if (lexicographically_less(p, b)
+                    || (!lexicographically_less(b, p) && j < best))
                   best = j;
               }
           return best;

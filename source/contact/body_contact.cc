@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <amfrac/base/concatenate.h>
 #include <amfrac/base/cross_matrix.h>
+#include <amfrac/base/point_order.h>
 #include <amfrac/contact/body_contact.h>
 #include <chrono>
 #include <cmath>
@@ -29,16 +30,6 @@ namespace amfrac
       return ((std::uint64_t(index[0]) & mask) << 42)
              | ((std::uint64_t(index[1]) & mask) << 21)
              | (std::uint64_t(index[2]) & mask);
-    }
-
-    template <int dim>
-    bool
-    lexicographically_less(const Point<dim> &a, const Point<dim> &b)
-    {
-      for (unsigned int d = 0; d < dim; ++d)
-        if (a[d] != b[d])
-          return a[d] < b[d];
-      return false;
     }
 
     /** The area (length in 2D) of a flat bilinear face. */

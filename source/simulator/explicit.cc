@@ -7,6 +7,7 @@
 #include <amfrac/assembly/bulk_force.h>
 #include <amfrac/base/ghost_import.h>
 #include <amfrac/base/mpi_max.h>
+#include <amfrac/base/point_order.h>
 #include <amfrac/cohesive/transfer_columns.h>
 #include <amfrac/parameters/expressions.h>
 #include <amfrac/parameters/input_error.h>
@@ -217,13 +218,7 @@ namespace amfrac
     // for all its components and for both copies of a split node.
     Vector rows;
     penalty_row_sums(rows);
-    const auto less = [](const Point<dim> &a, const Point<dim> &b) {
-      for (unsigned int d = 0; d < dim; ++d)
-        if (a[d] != b[d])
-          return a[d] < b[d];
-      return false;
-    };
-    std::map<Point<dim>, double, decltype(less)> needed(less);
+    std::map<Point<dim>, double, LexicographicLess> needed;
     const IndexSet &owned = dof_layer.locally_owned_dofs();
     for (const auto i : owned)
       {
