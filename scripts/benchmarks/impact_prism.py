@@ -6,7 +6,10 @@ microseconds, on 2 ranks (mpirun -np 2), Release, without field output.
 Meshes (one element per ply through the thickness):
 - hexahedra, uniform 0.5 mm (the scene of step 6);
 - wedges from Gmsh, 0.5 mm within 10 mm of the impact, growing to 2.5 mm
-  (the scene), and the same with 0.25 mm within 10 mm.
+  (the scene), and the same with 0.25 mm within 10 mm;
+- the scene's wedges remeshed by Gmsh whenever the ZZ error exceeds its
+  threshold (prm/impact_plate_prism_remeshed.prm; its cells: the most
+  any of its meshes had).
 Per mesh: wall time (median of REPEAT runs, from the process start), the
 number of cells, and against the reference, the uniform 0.25 mm
 hexahedral mesh (its history from REFERENCE, the histories file that
@@ -21,9 +24,14 @@ dissipation, debonded area and centre deflection per output step, and the
 reference's), which plot_impact_prism.py draws.
 
 Fails if the wedge scene is not faster than the 0.5 mm hexahedra or not
-closer to the reference in dissipation and debonded area.
+closer to the reference in dissipation and debonded area, or if the
+remeshed run does not remesh or its ledger (with the remeshing term) does
+not close to 1 % of the external work.
 
 usage: impact_prism.py AMFRAC REFERENCE-histories.csv OUT.csv [REPEAT]
+                       [MESHES]
+MESHES: a comma-separated list of the meshes' labels to run (default all);
+the failure criteria need their meshes.
 """
 import csv
 import os
@@ -35,6 +43,7 @@ import time
 
 amfrac, reference_csv, out_csv = sys.argv[1:4]
 repeat = int(sys.argv[4]) if len(sys.argv) > 4 else 3
+chosen = sys.argv[5].split(",") if len(sys.argv) > 5 else None
 here = os.path.dirname(os.path.abspath(__file__))
 prm_dir = os.path.join(here, "../../prm")
 work = tempfile.mkdtemp()
@@ -47,14 +56,17 @@ def scene_files(folder, name, fine_size):
     has one) with the wedges' fine size changed to FINE_SIZE."""
     with open(os.path.join(prm_dir, name + ".prm")) as f:
         text = f.read()
-    geo_file = os.path.join(prm_dir, name + ".geo")
+    named = [line.split("=")[1].strip() for line in text.splitlines()
+             if line.strip().startswith("set Mesh file")]
+    geo_file = os.path.join(prm_dir, named[0] if named else name + ".geo")
     if os.path.exists(geo_file):
         with open(geo_file) as f:
             geo = f.read()
         if fine_size is not None:
             geo = geo.replace("SizeMin = 0.5;", f"SizeMin = {fine_size};")
             assert f"SizeMin = {fine_size};" in geo
-        with open(os.path.join(folder, name + ".geo"), "w") as g:
+        with open(os.path.join(folder, os.path.basename(geo_file)),
+                  "w") as g:
             g.write(geo)
     return text
 
@@ -73,8 +85,15 @@ def run(label, name, fine_size):
                          capture_output=True, text=True, env=environment)
     seconds = time.perf_counter() - started
     cells = int(log.stdout.split(" cells,")[0].split()[-1])
+    changes = os.path.join(out, "adaptivity.csv")
+    remeshings = 0
+    if os.path.exists(changes):
+        with open(changes) as f:
+            rows = list(csv.DictReader(f))
+        remeshings = len(rows)
+        cells = max([cells] + [int(r["cells"]) for r in rows])
     with open(os.path.join(out, "history.csv")) as f:
-        return seconds, cells, list(csv.DictReader(f))
+        return seconds, cells, list(csv.DictReader(f)), remeshings
 
 
 def total(row, what):
@@ -90,7 +109,11 @@ def reference_history():
 
 meshes = [("hexahedra 0.5 mm", "impact_plate", None),
           ("wedges 0.5 mm zone", "impact_plate_prism", None),
-          ("wedges 0.25 mm zone", "impact_plate_prism", 0.25)]
+          ("wedges 0.25 mm zone", "impact_plate_prism", 0.25),
+          ("wedges remeshed", "impact_plate_prism_remeshed", None)]
+if chosen:
+    meshes = [m for m in meshes if m[0] in chosen]
+    assert len(meshes) == len(chosen), "unknown mesh in " + sys.argv[5]
 ref = reference_history()
 peak = max(abs(float(r["p0_uz"])) for r in ref)
 ref_dissipated = float(ref[-1]["dissipated"])
@@ -99,7 +122,7 @@ rows, histories = [], [("hexahedra 0.25 mm (reference)", r) for r in ref]
 for label, name, fine in meshes:
     runs = [run(label, name, fine) for _ in range(repeat)]
     seconds = statistics.median(r[0] for r in runs)
-    _, cells, history = runs[-1]
+    _, cells, history, remeshings = runs[-1]
     last = history[-1]
     at = {round(float(r["time"]) * 1e9): float(r["p0_uz"]) for r in history}
     row = {"mesh": label, "seconds": seconds, "cells": cells,
@@ -107,6 +130,8 @@ for label, name, fine in meshes:
            "debonded": total(last, "debonded"),
            "contact": total(last, "friction"),
            "external_work": float(last["external_work"]),
+           "remeshings": remeshings,
+           "remeshing_energy": float(last.get("remeshing_energy", 0)),
            "balance_error": max(abs(float(r["balance_error"]))
                                 for r in history)}
     row["dissipated_error"] = row["dissipated"] / ref_dissipated - 1
@@ -135,13 +160,22 @@ with open(out_csv.replace(".csv", "-histories.csv"), "w",
         writer.writerow([label, r["time"], r["dissipated"], r["debonded"],
                          r["p0_uz"]])
 
-hexahedra, wedges = rows[0], rows[1]
+by_label = {r["mesh"]: r for r in rows}
 failures = []
-if not wedges["seconds"] < hexahedra["seconds"]:
-    failures.append("the wedge scene is not faster than the hexahedra")
-for what in ("dissipated_error", "debonded_error"):
-    if not abs(wedges[what]) < abs(hexahedra[what]):
-        failures.append(f"the wedge scene's {what} is not smaller")
+hexahedra = by_label.get("hexahedra 0.5 mm")
+wedges = by_label.get("wedges 0.5 mm zone")
+if hexahedra and wedges:
+    if not wedges["seconds"] < hexahedra["seconds"]:
+        failures.append("the wedge scene is not faster than the hexahedra")
+    for what in ("dissipated_error", "debonded_error"):
+        if not abs(wedges[what]) < abs(hexahedra[what]):
+            failures.append(f"the wedge scene's {what} is not smaller")
+remeshed = by_label.get("wedges remeshed")
+if remeshed:
+    if remeshed["remeshings"] < 1:
+        failures.append("the remeshed scene did not remesh")
+    if not remeshed["balance_error"] < 0.01 * remeshed["external_work"]:
+        failures.append("the remeshed scene's ledger does not close")
 for failure in failures:
     print("FAIL:", failure)
 sys.exit(1 if failures else 0)

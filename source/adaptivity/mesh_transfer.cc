@@ -334,6 +334,56 @@ namespace amfrac
 
 
 
+  template <int dim>
+  typename NonMatchingTransfer<dim>::Momentum
+  NonMatchingTransfer<dim>::momentum(const Vector<double>      &old_copies,
+                                     const std::vector<double> &density,
+                                     const Quadrature<dim> &new_points) const
+  {
+    const auto &old_fe = old_dofs.get_fe(), &new_fe = new_dofs.get_fe();
+    const auto &old_base = old_fe.base_element(0);
+    std::vector<types::global_dof_index> old_indices(old_fe.n_dofs_per_cell()),
+      new_indices(new_fe.n_dofs_per_cell());
+    FEValues<dim> values(new_dofs.get_mapping(),
+                         new_fe,
+                         new_points,
+                         update_values | update_quadrature_points
+                           | update_JxW_values);
+    Momentum      result{Vector<double>(new_dofs.n_copies()),
+                    Vector<double>(new_dofs.n_copies())};
+    outside = 0;
+    for (const auto &cell : new_dofs.copy_handler().active_cell_iterators())
+      {
+        values.reinit(cell);
+        cell->get_dof_indices(new_indices);
+        const double rho = density.at(cell->material_id());
+        for (const unsigned int q : values.quadrature_point_indices())
+          {
+            const auto found = old_cells.locate(values.quadrature_point(q),
+                                                cell->material_id());
+            outside += found.inside ? 0 : 1;
+            found.cell->get_dof_indices(old_indices);
+            Tensor<1, dim> v;
+            for (unsigned int m = 0; m < old_base.n_dofs_per_cell(); ++m)
+              for (unsigned int c = 0; c < dim; ++c)
+                v[c] += old_base.shape_value(m, found.unit)
+                        * old_copies
+                          [old_indices[old_fe.component_to_system_index(c, m)]];
+            result.kinetic_energy += 0.5 * rho * (v * v) * values.JxW(q);
+            for (const unsigned int i : values.dof_indices())
+              {
+                const double w = rho * values.shape_value(i, q) * values.JxW(q);
+                result.mass[new_indices[i]] += w;
+                result.momentum[new_indices[i]]
+                  += w * v[new_fe.system_to_component_index(i).first];
+              }
+          }
+      }
+    return result;
+  }
+
+
+
   template class CellLocator<2>;
   template class CellLocator<3>;
   template class NonMatchingTransfer<2>;

@@ -1700,15 +1700,12 @@ namespace amfrac
              "a Geometry/Refinement region (deal.II cannot refine wedges)");
       // Wedges adapt by global remeshing (deal.II cannot refine them):
       // between the cycles of a static run, or when the estimator's
-      // triggers fire during the load history of a Newton run.
+      // triggers fire during the load history of a Newton or explicit
+      // run.
       refuse(adaptivity.process_zone_elements > 0,
              "Adaptivity/Process zone elements (the size field of a "
              "remeshing comes from the ZZ estimate: use Refine every or "
              "Error threshold)");
-      refuse(adaptivity.during_history() && time.explicit_dynamics,
-             "Adaptivity/Refine every or Error threshold in an explicit "
-             "run (prisms are remeshed during the load history of "
-             "Time integration = static runs only so far)");
       refuse(adaptivity.during_history() && checkpoint.by_count_or_stop(),
              "Adaptivity/Refine every or Error threshold with "
              "Checkpoint/Every n steps or Stop after step (a checkpoint "
@@ -2324,9 +2321,8 @@ namespace amfrac
                         "Strategy and refine after every this many "
                         "converged load steps (explicit: output steps, "
                         "rows of history.csv), moving the state to the new "
-                        "mesh (0: never; prisms are remeshed, in Newton "
-                        "runs). Explicit runs then choose a new stable "
-                        "step.");
+                        "mesh (0: never; prisms are remeshed instead). "
+                        "Explicit runs then choose a new stable step.");
       prm.declare_entry("Error threshold",
                         "0",
                         Patterns::Double(0, 1),
@@ -2334,8 +2330,8 @@ namespace amfrac
                         "insertion, and explicit runs: also refine after a "
                         "converged step (explicit: an output step) whose "
                         "relative ZZ error exceeds this (the seed's "
-                        "criterion; 0: off). Prisms (Newton runs) are "
-                        "remeshed instead, to the size field of Strategy "
+                        "criterion; 0: off). Prisms are remeshed "
+                        "instead, to the size field of Strategy "
                         "= error target or uniform; if the first estimate "
                         "on a new mesh is not a tenth below the error that "
                         "made it (the size bounds stop the remeshing from "

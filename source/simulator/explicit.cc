@@ -851,6 +851,13 @@ namespace amfrac
                                    change.momentum_after[d]);
             }
           columns.emplace_back("remeshing_energy", remeshing_energy);
+          if (remeshes())
+            {
+              columns.emplace_back("kinetic_old_field",
+                                   change.report.kinetic_old_field);
+              for (const auto &column : last_remeshing.columns())
+                columns.push_back(column);
+            }
           if (interfaces)
             {
               const auto transfer
@@ -1029,6 +1036,8 @@ namespace amfrac
                   change.ledger_before = interfaces->ledger(comm);
                 change.report
                   = move_explicit_state({&solution, &last_good}, velocity);
+                if (!change.report.changed)
+                  return;
                 layout(false);
                 lump_mass();
                 split_mass();

@@ -295,7 +295,10 @@ namespace amfrac
       if (remeshes())
         {
           // (Plastic plies are refused on prisms.)
-          if (!remesh_carrying(copies, new_copies))
+          const auto nodal = [&](const auto &transfer, const auto &old) {
+            new_copies = transfer.nodal(old[0]);
+          };
+          if (!remesh_carrying({copies}, nodal))
             {
               cell_budget_spent = true;
               pcout << "  the mesh has " << triangulation.n_active_cells()
@@ -461,6 +464,8 @@ namespace amfrac
   Simulator<dim>::move_explicit_state(const std::vector<Vector *> &fields,
                                       Vector                      &velocity)
   {
+    if (remeshes())
+      return remesh_explicit_state(fields, velocity);
     TimerOutput::Scope scope(timer, "refine and transfer");
     typename CohesiveInterfaces<dim>::Snapshot snapshot;
     if (interfaces)
@@ -487,6 +492,108 @@ namespace amfrac
         = interfaces->transfer(snapshot, relevant_solution, comm);
     report.coarsened_cells = moving.n_coarsened_cells();
     report.momentum_dofs   = moving.n_momentum_dofs();
+    return report;
+  }
+
+
+
+  namespace
+  {
+    /** @p copies summed per reduced unknown of @p layer, in the order of
+     * the cells (the same on every rank: the mesh is replicated), not of
+     * the copies (numbered rank by rank), so that the sums do not depend
+     * on the partition: explicit runs amplify round-off. */
+    template <int dim>
+    dealii::Vector<double>
+    sums_by_cells(const TiedCopyDoFs<dim>      &layer,
+                  const dealii::Vector<double> &copies)
+    {
+      dealii::Vector<double>               sums(layer.n_dofs());
+      std::vector<types::global_dof_index> of_cell(
+        layer.get_fe().n_dofs_per_cell());
+      for (const auto &cell : layer.copy_handler().active_cell_iterators())
+        {
+          cell->get_dof_indices(of_cell);
+          for (const auto copy : of_cell)
+            sums[layer.reduced_index(copy)] += copies[copy];
+        }
+      return sums;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  typename Simulator<dim>::ExplicitTransferReport
+  Simulator<dim>::remesh_explicit_state(const std::vector<Vector *> &fields,
+                                        Vector                      &velocity)
+  {
+    TimerOutput::Scope scope(timer, "refine and transfer");
+    typename CohesiveInterfaces<dim>::Snapshot snapshot;
+    if (interfaces)
+      snapshot = interfaces->snapshot(comm);
+    // The old copies: the displacement-like fields, the velocity last.
+    std::vector<dealii::Vector<double>> copies(fields.size() + 1);
+    for (unsigned int f = 0; f <= fields.size(); ++f)
+      dof_layer.expand_all(dof_layer.replicate(f < fields.size() ? *fields[f] :
+                                                                   velocity),
+                           copies[f]);
+    std::vector<double> density;
+    for (const auto &ply : plies)
+      density.push_back(ply.density);
+    std::vector<dealii::Vector<double>>         carried;
+    typename NonMatchingTransfer<dim>::Momentum momentum;
+    const auto carry = [&](const auto &transfer, const auto &old) {
+      for (unsigned int f = 0; f < fields.size(); ++f)
+        carried.push_back(transfer.nodal(old[f]));
+      momentum
+        = transfer.momentum(old.back(), density, dof_layer.cell_quadrature(2));
+    };
+    ExplicitTransferReport report;
+    if (!remesh_carrying(copies, carry))
+      {
+        cell_budget_spent = true;
+        pcout << "  the mesh has " << triangulation.n_active_cells()
+              << " cells, about Adaptivity/Maximum cells: no more "
+                 "remeshing in this run"
+              << std::endl;
+        report.changed = false;
+        return report;
+      }
+    if (interfaces)
+      interfaces->setup(dof_layer, parameters.boundary_conditions.constants);
+    // The mean of a node's copies (located in their own plies' old cells,
+    // so equal only to round-off across a bonded ply face).
+    dealii::Vector<double> ones(dof_layer.n_copies());
+    ones              = 1;
+    const auto counts = sums_by_cells(dof_layer, ones);
+    for (unsigned int f = 0; f < fields.size(); ++f)
+      {
+        const auto sums = sums_by_cells(dof_layer, carried[f]);
+        fields[f]->reinit(dof_layer.locally_owned_dofs(), comm);
+        for (const auto i : dof_layer.locally_owned_dofs())
+          (*fields[f])[i] = sums[i] / counts[i];
+        fields[f]->compress(VectorOperation::insert);
+      }
+    const auto mass = sums_by_cells(dof_layer, momentum.mass);
+    const auto p    = sums_by_cells(dof_layer, momentum.momentum);
+    velocity.reinit(dof_layer.locally_owned_dofs(), comm);
+    for (const auto i : dof_layer.locally_owned_dofs())
+      velocity[i] = p[i] / mass[i];
+    velocity.compress(VectorOperation::insert);
+
+    relevant_solution.reinit(dof_layer.locally_owned_dofs(),
+                             dof_layer.locally_relevant_dofs(),
+                             comm);
+    relevant_solution = *fields.front();
+    dof_layer.expand(relevant_solution, copy_values);
+    if (interfaces)
+      report.interfaces = interfaces->relocate(snapshot,
+                                               triangulation,
+                                               relevant_solution,
+                                               comm);
+    report.momentum_dofs     = dof_layer.n_dofs();
+    report.kinetic_old_field = momentum.kinetic_energy;
     return report;
   }
 

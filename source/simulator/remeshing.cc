@@ -41,11 +41,14 @@ namespace amfrac
   bool
   Simulator<dim>::remesh()
   {
-    dealii::Vector<double> copies, carried;
+    std::vector<dealii::Vector<double>> copies(1);
+    dealii::Vector<double>              carried;
     dof_layer.expand_all(error_estimator().replicate(relevant_solution),
-                         copies);
+                         copies[0]);
     const double old_norm = last_zz.solution_norm;
-    if (!remesh_carrying(copies, carried))
+    if (!remesh_carrying(copies, [&](const auto &transfer, const auto &old) {
+          carried = transfer.nodal(old[0]);
+        }))
       {
         pcout << "  the mesh has " << triangulation.n_active_cells()
               << " cells, about Adaptivity/Maximum cells: the cycles stop"
@@ -75,8 +78,9 @@ namespace amfrac
 
   template <int dim>
   bool
-  Simulator<dim>::remesh_carrying(const dealii::Vector<double> &copies,
-                                  dealii::Vector<double>       &carried)
+  Simulator<dim>::remesh_carrying(
+    const std::vector<dealii::Vector<double>> &copies,
+    const Carry                               &carry)
   {
     // The size field lives in the plane of a 3D laminate.
     if constexpr (dim != 3)
@@ -128,8 +132,9 @@ namespace amfrac
                                     dof_layer.get_fe().degree,
                                     dof_layer.reference_cell());
         old_layer.distribute();
-        const dealii::Vector<double> old_copies
-          = copies_on(dof_layer, copies, old_layer);
+        std::vector<dealii::Vector<double>> old_copies;
+        for (const auto &field : copies)
+          old_copies.push_back(copies_on(dof_layer, field, old_layer));
 
         {
           TimerOutput::Scope scope(timer, "remesh (Gmsh)");
@@ -147,7 +152,7 @@ namespace amfrac
         {
           TimerOutput::Scope             scope(timer, "transfer");
           const NonMatchingTransfer<dim> transfer(old_layer, dof_layer);
-          carried       = transfer.nodal(old_copies);
+          carry(transfer, old_copies);
           event.outside = transfer.n_outside();
         }
         event.transfer_seconds = watch.wall_time();

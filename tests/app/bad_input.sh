@@ -678,13 +678,16 @@ subsection Adaptivity
   set Strategy = uniform
   set Estimator = kelly
 end"
-# Remeshing during a load history: Newton runs with the estimator's
-# triggers only, so far.
-expect prism_adaptivity_history "Error threshold in an explicit run" "$base
+# Remeshing during a load history (Newton and explicit runs): no
+# checkpoints by count, which replay refinements of the first mesh.
+expect prism_explicit_remeshing_checkpoint "a remeshed mesh is none" "$base
 $prism
 $explicit
 subsection Adaptivity
   set Refine every = 2
+end
+subsection Checkpoint
+  set Every n steps = 5
 end"
 expect prism_adaptivity_process_zone "Adaptivity/Process zone elements (the size field" "$base
 $prism

@@ -108,6 +108,34 @@ namespace amfrac
                const std::vector<Rule> &rules,
                const Quadrature<dim>   &new_points) const;
 
+    /** What the momentum rule of a velocity needs on the new layer, per
+     * copy i: int rho phi_i v_old,c(i) and int rho phi_i over its cell. */
+    struct Momentum
+    {
+      Vector<double> momentum;
+      Vector<double> mass;
+      /** 1/2 int rho |v_old|^2 at the same points: the bound of the new
+       * kinetic energy. */
+      double kinetic_energy = 0;
+    };
+
+    /** The momentum rule for a velocity (remeshing of explicit runs):
+     * @p old_copies evaluated at the points @p new_points of every new
+     * cell (each located in the old mesh of its ply) and integrated
+     * against the new shape functions, with @p density per material id.
+     * Summed over the copies of a reduced unknown, momentum / mass is a
+     * weighted mean of the old velocity with the non-negative weights
+     * rho phi_i JxW (degree 1, Gauss points inside the cell): the kinetic
+     * energy of the new lumped mass never exceeds the old field's at
+     * those points, and the new lumped momentum is the old field's
+     * integral. Nodal interpolation instead hands a node of a coarser
+     * mesh the mass of the nodes it replaces at its own velocity, which
+     * can create kinetic energy. */
+    Momentum
+    momentum(const Vector<double>      &old_copies,
+             const std::vector<double> &density,
+             const Quadrature<dim>     &new_points) const;
+
     /** How many new nodes (a vertex once per ply) and points lay outside the
      * old mesh of their ply at the last call (extrapolated from the nearest
      * cell). */

@@ -3,6 +3,7 @@
 #include <amfrac/adaptivity/error_estimator.h>
 #include <amfrac/adaptivity/explicit_state_transfer.h>
 #include <amfrac/adaptivity/history_transfer.h>
+#include <amfrac/adaptivity/mesh_transfer.h>
 #include <amfrac/assembly/elastic_assembler.h>
 #include <amfrac/assembly/face_hoffman_screen.h>
 #include <amfrac/assembly/lever.h>
@@ -594,16 +595,23 @@ namespace amfrac
      * cell budget is spent. */
     bool
     remesh();
+    /** What moves fields to a remeshed mesh: called with the transfer
+     * from the old layer to the new one and the fields on the old layer
+     * (in the order given to remesh_carrying()). */
+    using Carry
+      = std::function<void(const NonMatchingTransfer<dim> &,
+                           const std::vector<dealii::Vector<double>> &)>;
     /** The mesh change of remesh(), between cycles and during a load
      * history: the new mesh from Gmsh for the last estimate's size field,
-     * the DoF layer rebuilt on it and @p copies (the copy values of every
-     * cell of the old layer, TiedCopyDoFs::expand_all()) carried to the
-     * copies of the new layer (tau_2) into @p carried; fills
-     * last_remeshing but its energy change. False, with nothing changed,
-     * if the cell budget (Adaptivity/Maximum cells) is spent. */
+     * the DoF layer rebuilt on it, and @p carry called with @p copies (the
+     * copy values of every cell of the old layer, TiedCopyDoFs::
+     * expand_all()) on a copy of the old layer, to carry them to the new
+     * one (tau_2); fills last_remeshing but its energy change. False,
+     * with nothing changed, if the cell budget (Adaptivity/Maximum cells)
+     * is spent. */
     bool
-    remesh_carrying(const dealii::Vector<double> &copies,
-                    dealii::Vector<double>       &carried);
+    remesh_carrying(const std::vector<dealii::Vector<double>> &copies,
+                    const Carry                               &carry);
     /** Whether the mesh adapts by global remeshing (wedges). */
     bool
     remeshes() const
@@ -646,6 +654,12 @@ namespace amfrac
       typename CohesiveInterfaces<dim>::TransferReport interfaces;
       unsigned int                                     coarsened_cells = 0;
       types::global_dof_index                          momentum_dofs   = 0;
+      /** A remeshing: the kinetic energy of the old velocity field
+       * integrated at the new mesh's points, which bounds the new one's
+       * (NonMatchingTransfer::momentum()); -1 otherwise. */
+      double kinetic_old_field = -1;
+      /** False if nothing moved (a remeshing with the cell budget spent). */
+      bool changed = true;
     };
     /** Explicit runs: execute the flags and move the displacement-like
      * @p fields (the displacement first) and the @p velocity to the new
@@ -654,6 +668,13 @@ namespace amfrac
      * there are interfaces. */
     ExplicitTransferReport
     move_explicit_state(const std::vector<Vector *> &fields, Vector &velocity);
+    /** move_explicit_state() on a wedge mesh: remesh_carrying(), the
+     * fields by NonMatchingTransfer::nodal(), the velocity by its momentum
+     * rule on the new lumped mass, the interface history by
+     * CohesiveInterfaces::relocate(). */
+    ExplicitTransferReport
+    remesh_explicit_state(const std::vector<Vector *> &fields,
+                          Vector                      &velocity);
     /** Make every refine flag a cut along the plies and refine coarser
      * cells at the vertices of flagged cells along the plies too, so that
      * deal.II never has to refine through the thickness. */
