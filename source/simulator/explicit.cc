@@ -1041,6 +1041,16 @@ namespace amfrac
                 layout(false);
                 lump_mass();
                 split_mass();
+                // The momentum rule gives supported nodes the mean of
+                // their neighbours' velocity; a fixed mesh keeps them at
+                // rest (their acceleration is zero), and so does this.
+                if (remeshes())
+                  {
+                    for (const auto i : owned)
+                      if (support_mask(i) != 0)
+                        velocity(i) = 0;
+                    velocity.compress(VectorOperation::insert);
+                  }
                 build_operators();
                 // The sphere keeps its centre and velocity; its
                 // contact nodes are those of the new face.

@@ -300,11 +300,7 @@ namespace amfrac
           };
           if (!remesh_carrying({copies}, nodal))
             {
-              cell_budget_spent = true;
-              pcout << "  the mesh has " << triangulation.n_active_cells()
-                    << " cells, about Adaptivity/Maximum cells: no more "
-                       "remeshing in this run"
-                    << std::endl;
+              stop_remeshing();
               return;
             }
           if (interfaces)
@@ -519,7 +515,42 @@ namespace amfrac
         }
       return sums;
     }
+
+    /** The owned entries of @p reduced: per reduced unknown of @p layer,
+     * the sum of @p numerators over its copies divided by that of
+     * @p denominators (sums_by_cells()). Ones give the mean of the copies
+     * (equal only to round-off across a bonded ply face: each is located
+     * in its own ply's old cells); the momentum rule's momentum and mass
+     * give the velocity. */
+    template <int dim>
+    void
+    ratio_of_sums(const TiedCopyDoFs<dim>       &layer,
+                  const dealii::Vector<double>  &numerators,
+                  const dealii::Vector<double>  &denominators,
+                  TrilinosWrappers::MPI::Vector &reduced,
+                  const MPI_Comm                 comm)
+    {
+      const auto top    = sums_by_cells(layer, numerators);
+      const auto bottom = sums_by_cells(layer, denominators);
+      reduced.reinit(layer.locally_owned_dofs(), comm);
+      for (const auto i : layer.locally_owned_dofs())
+        reduced[i] = top[i] / bottom[i];
+      reduced.compress(VectorOperation::insert);
+    }
   } // namespace
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::stop_remeshing()
+  {
+    cell_budget_spent = true;
+    pcout << "  the mesh has " << triangulation.n_active_cells()
+          << " cells, about Adaptivity/Maximum cells: no more remeshing in "
+             "this run"
+          << std::endl;
+  }
 
 
 
@@ -532,7 +563,8 @@ namespace amfrac
     typename CohesiveInterfaces<dim>::Snapshot snapshot;
     if (interfaces)
       snapshot = interfaces->snapshot(comm);
-    // The old copies: the displacement-like fields, the velocity last.
+    // The velocity's copies go last: the carry below takes them from
+    // there.
     std::vector<dealii::Vector<double>> copies(fields.size() + 1);
     for (unsigned int f = 0; f <= fields.size(); ++f)
       dof_layer.expand_all(dof_layer.replicate(f < fields.size() ? *fields[f] :
@@ -543,44 +575,28 @@ namespace amfrac
       density.push_back(ply.density);
     std::vector<dealii::Vector<double>>         carried;
     typename NonMatchingTransfer<dim>::Momentum momentum;
+    // The nodal transfer last: n_outside() then counts new nodes, as in
+    // Newton runs, not the velocity's quadrature points.
     const auto carry = [&](const auto &transfer, const auto &old) {
-      for (unsigned int f = 0; f < fields.size(); ++f)
-        carried.push_back(transfer.nodal(old[f]));
       momentum
         = transfer.momentum(old.back(), density, dof_layer.cell_quadrature(2));
+      for (unsigned int f = 0; f < fields.size(); ++f)
+        carried.push_back(transfer.nodal(old[f]));
     };
     ExplicitTransferReport report;
     if (!remesh_carrying(copies, carry))
       {
-        cell_budget_spent = true;
-        pcout << "  the mesh has " << triangulation.n_active_cells()
-              << " cells, about Adaptivity/Maximum cells: no more "
-                 "remeshing in this run"
-              << std::endl;
+        stop_remeshing();
         report.changed = false;
         return report;
       }
     if (interfaces)
       interfaces->setup(dof_layer, parameters.boundary_conditions.constants);
-    // The mean of a node's copies (located in their own plies' old cells,
-    // so equal only to round-off across a bonded ply face).
     dealii::Vector<double> ones(dof_layer.n_copies());
-    ones              = 1;
-    const auto counts = sums_by_cells(dof_layer, ones);
+    ones = 1;
     for (unsigned int f = 0; f < fields.size(); ++f)
-      {
-        const auto sums = sums_by_cells(dof_layer, carried[f]);
-        fields[f]->reinit(dof_layer.locally_owned_dofs(), comm);
-        for (const auto i : dof_layer.locally_owned_dofs())
-          (*fields[f])[i] = sums[i] / counts[i];
-        fields[f]->compress(VectorOperation::insert);
-      }
-    const auto mass = sums_by_cells(dof_layer, momentum.mass);
-    const auto p    = sums_by_cells(dof_layer, momentum.momentum);
-    velocity.reinit(dof_layer.locally_owned_dofs(), comm);
-    for (const auto i : dof_layer.locally_owned_dofs())
-      velocity[i] = p[i] / mass[i];
-    velocity.compress(VectorOperation::insert);
+      ratio_of_sums(dof_layer, carried[f], ones, *fields[f], comm);
+    ratio_of_sums(dof_layer, momentum.momentum, momentum.mass, velocity, comm);
 
     relevant_solution.reinit(dof_layer.locally_owned_dofs(),
                              dof_layer.locally_relevant_dofs(),

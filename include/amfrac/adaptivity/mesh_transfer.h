@@ -128,9 +128,12 @@ namespace amfrac
      * rho phi_i JxW (degree 1, Gauss points inside the cell): the kinetic
      * energy of the new lumped mass never exceeds the old field's at
      * those points, and the new lumped momentum is the old field's
-     * integral. Nodal interpolation instead hands a node of a coarser
-     * mesh the mass of the nodes it replaces at its own velocity, which
-     * can create kinetic energy. */
+     * integral. (The lumped mass of a linear wedge, its vertices with
+     * equal weights, equals this mass on affine wedges: those of the
+     * extruded meshes, which remeshing keeps flat, without Mesh
+     * distortion or Imperfection.) Nodal interpolation instead hands a node of
+     * a coarser mesh the mass of the nodes it replaces at its own velocity,
+     * which can create kinetic energy. */
     Momentum
     momentum(const Vector<double>      &old_copies,
              const std::vector<double> &density,

@@ -668,6 +668,10 @@ namespace amfrac
      * there are interfaces. */
     ExplicitTransferReport
     move_explicit_state(const std::vector<Vector *> &fields, Vector &velocity);
+    /** The cell budget (Adaptivity/Maximum cells) is spent: no more
+     * remeshing during this run, and say so. */
+    void
+    stop_remeshing();
     /** move_explicit_state() on a wedge mesh: remesh_carrying(), the
      * fields by NonMatchingTransfer::nodal(), the velocity by its momentum
      * rule on the new lumped mass, the interface history by
