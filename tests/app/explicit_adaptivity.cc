@@ -48,9 +48,9 @@
 //   dissipated energy (1e-12) and the interface in balance; the ledger
 //   closes with the remeshing term to 1e-3 of the work (measured 7.5e-4).
 //   Moving a wave between unrelated meshes costs energy: 35 % of the work
-//   over this under-resolved run (the lumped kinetic energy of a 3 mm
-//   mesh exceeds its field's; step 15 and benchmark section 26); more
-//   than 40 % fails.
+//   over this under-resolved run (the largest part: the lumped kinetic
+//   energy of a 3 mm mesh exceeds its field's; step 15 and benchmark
+//   section 26); more than 40 % fails.
 // usage: app_explicit_adaptivity free_bar|bar BAR.prm WORKDIR
 //        app_explicit_adaptivity impact|sphere|prism SCENE.prm COARSE.prm
 //          WORKDIR
