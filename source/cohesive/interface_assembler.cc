@@ -213,6 +213,8 @@ namespace amfrac
     element.coarse_cell = cell->id().get_coarse_cell_id();
     element.cell        = cell->id();
     element.face        = face;
+    element.triangle
+      = cell->face(face)->reference_cell() == ReferenceCells::Triangle;
     element.active_cell = cell->active_cell_index();
     element.box         = coarse_cell_box<dim>(cell);
     element.interface   = is_crack(cell, face) ?

@@ -638,17 +638,30 @@ namespace amfrac
   TiedCopyDoFs<dim>::gather(const Vector<double>          &copies,
                             TrilinosWrappers::MPI::Vector &reduced) const
   {
-    std::vector<double>       sum(n_dofs(), 0.);
+    const Vector<double>      sum = sums_over_copies(copies);
     std::vector<unsigned int> count(n_dofs(), 0);
-    for (types::global_dof_index c = 0; c < n_copies(); ++c)
-      if (owned_dofs.is_element(copy_to_reduced[c]))
-        {
-          sum[copy_to_reduced[c]] += copies[c];
-          ++count[copy_to_reduced[c]];
-        }
+    for (const auto r : copy_to_reduced)
+      ++count[r];
     for (const auto i : owned_dofs)
       reduced[i] = sum[i] / count[i];
     reduced.compress(VectorOperation::insert);
+  }
+
+
+
+  template <int dim>
+  Vector<double>
+  TiedCopyDoFs<dim>::sums_over_copies(const Vector<double> &copies) const
+  {
+    Vector<double>                       sums(n_dofs());
+    std::vector<types::global_dof_index> of_cell(fe->n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(of_cell);
+        for (const auto copy : of_cell)
+          sums[copy_to_reduced[copy]] += copies[copy];
+      }
+    return sums;
   }
 
 

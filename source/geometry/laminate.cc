@@ -244,19 +244,20 @@ namespace amfrac
 
 
     /** The laminate of a Gmsh in-plane mesh (Geometry/Mesh file, or an
-     * open hole on prisms), extruded through the element layers. */
+     * open hole on prisms; @p given: a remeshing's), extruded through the
+     * element layers. */
     template <int dim>
     void
     make_gmsh_laminate(const parameters::Geometry &geometry,
                        const Laminate             &laminate,
                        Triangulation<dim>         &triangulation,
-                       const InPlaneSize          &in_plane_size)
+                       const PlaneMesh            *given)
     {
       if constexpr (dim != 3)
         {
           (void)laminate;
           (void)triangulation;
-          (void)in_plane_size;
+          (void)given;
           throw InputError(geometry.mesh_file.empty() ?
                              "Geometry/Element shape" :
                              "Geometry/Mesh file",
@@ -264,22 +265,22 @@ namespace amfrac
         }
       else
         {
-          const PlaneMesh plane = make_plane_mesh_on_root(
-            [&]() {
-              if (geometry.mesh_file.empty())
-                return mesh_open_hole_plane(geometry.length,
-                                            geometry.width,
-                                            geometry.hole_radius,
-                                            in_plane_size ?
-                                              in_plane_size :
-                                              open_hole_element_size(geometry));
-              if (in_plane_size)
-                return read_plane_mesh(geometry.mesh_file, in_plane_size);
-              return read_plane_mesh(geometry.mesh_file,
-                                     std::pow(0.5, geometry.global_refinements),
-                                     geometry.global_refinements);
-            },
-            triangulation.get_communicator());
+          const PlaneMesh plane
+            = given ? *given :
+                      make_plane_mesh_on_root(
+                        [&]() {
+                          if (geometry.mesh_file.empty())
+                            return mesh_open_hole_plane(geometry.length,
+                                                        geometry.width,
+                                                        geometry.hole_radius,
+                                                        open_hole_element_size(
+                                                          geometry));
+                          return read_plane_mesh(
+                            geometry.mesh_file,
+                            std::pow(0.5, geometry.global_refinements),
+                            geometry.global_refinements);
+                        },
+                        triangulation.get_communicator());
           const bool mixed
             = !plane.triangles.empty() && !plane.quadrilaterals.empty();
           if (!mixed && geometry.prisms && !plane.quadrilaterals.empty())
@@ -306,13 +307,32 @@ namespace amfrac
 
 
 
+  PlaneMesh
+  mesh_laminate_plane(const parameters::Geometry &geometry,
+                      const InPlaneSize          &size,
+                      const MPI_Comm              comm)
+  {
+    return make_plane_mesh_on_root(
+      [&]() {
+        if (geometry.mesh_file.empty())
+          return mesh_open_hole_plane(geometry.length,
+                                      geometry.width,
+                                      geometry.hole_radius,
+                                      size);
+        return read_plane_mesh(geometry.mesh_file, size);
+      },
+      comm);
+  }
+
+
+
   template <int dim>
   void
   make_laminate_mesh(const parameters::Geometry &geometry,
                      const Laminate             &laminate,
                      Triangulation<dim>         &triangulation,
                      const bool                  region_along_plies,
-                     const InPlaneSize          &in_plane_size)
+                     const PlaneMesh            *plane)
   {
     // A 2D in-plane model meshes the laminate's (x, y) plane with one
     // (homogenized) material; otherwise the last axis is the thickness
@@ -343,9 +363,9 @@ namespace amfrac
       box[dim - 1] = laminate.thickness();
     const bool from_gmsh
       = !geometry.mesh_file.empty()
-        || (geometry.prisms && (geometry.hole_radius > 0 || in_plane_size));
+        || (geometry.prisms && (geometry.hole_radius > 0 || plane));
     if (from_gmsh)
-      make_gmsh_laminate(geometry, laminate, triangulation, in_plane_size);
+      make_gmsh_laminate(geometry, laminate, triangulation, plane);
     else if (geometry.hole_radius > 0)
       make_open_hole_mesh(geometry, laminate, triangulation);
     else if (geometry.prisms)
@@ -581,11 +601,11 @@ namespace amfrac
                         const Laminate &,
                         Triangulation<2> &,
                         const bool,
-                        const InPlaneSize &);
+                        const PlaneMesh *);
   template void
   make_laminate_mesh<3>(const parameters::Geometry &,
                         const Laminate &,
                         Triangulation<3> &,
                         const bool,
-                        const InPlaneSize &);
+                        const PlaneMesh *);
 } // namespace amfrac

@@ -1702,15 +1702,18 @@ namespace amfrac
       // between the cycles of a static run, or when the estimator's
       // triggers fire during the load history of a Newton or explicit
       // run.
-      refuse(adaptivity.process_zone_elements > 0,
-             "Adaptivity/Process zone elements (the size field of a "
-             "remeshing comes from the ZZ estimate: use Refine every or "
-             "Error threshold)");
-      refuse(adaptivity.during_history() && checkpoint.by_count_or_stop(),
-             "Adaptivity/Refine every or Error threshold with "
-             "Checkpoint/Every n steps or Stop after step (a checkpoint "
-             "replays refinements of the first mesh, and a remeshed mesh "
-             "is none)");
+      // The process-zone rule remeshes to its own size field.
+      const bool process_zone = adaptivity.process_zone_elements > 0;
+      refuse(process_zone && adaptivity.by_estimator(),
+             "Adaptivity/Process zone elements together with Refine every "
+             "or Error threshold (a remeshing meshes to one size field, the "
+             "process zone's or the ZZ estimate's)");
+      refuse(process_zone && adaptivity.process_zone_axes != 3,
+             "Adaptivity/Process zone directions = x or y (a remeshing "
+             "meshes to an in-plane size, the same along x and y)");
+      refuse(process_zone && time.explicit_dynamics,
+             "Adaptivity/Process zone elements in an explicit run (not yet: "
+             "use Error threshold)");
       refuse(adaptivity.active()
                && adaptivity.estimator == Adaptivity::Estimator::kelly,
              "Adaptivity/Estimator = kelly (prisms are remeshed by the ZZ "
@@ -2352,7 +2355,11 @@ namespace amfrac
                         "than 3 l_cz coarsened (never below the initial "
                         "mesh). Checked after every converged step and "
                         "before the first; in explicit runs after every "
-                        "output step (0: off).");
+                        "output step (0: off). Prisms (Newton runs) are "
+                        "remeshed instead when a cell within l_cz of a "
+                        "front is coarser than 1.5 l_cz / n: to l_cz / n "
+                        "within 2 l_cz of the fronts, growing by half the "
+                        "distance beyond up to the first mesh's size.");
       prm.declare_entry("Process zone directions",
                         "xy",
                         Patterns::Selection("xy|x|y"),

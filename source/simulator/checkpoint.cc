@@ -225,6 +225,8 @@ namespace amfrac
     run.put_integer("cycle", cycle);
     run.put_integers("mesh.changes", mesh_changes);
     run.put_integer("mesh.active_cells", triangulation.n_active_cells());
+    if (remeshes())
+      save_remeshing(run);
     // Inserted cracks: the DoF layer of a restart releases them before
     // the interface history is read back.
     if (interfaces && interfaces->cracks_enabled())
@@ -303,6 +305,84 @@ namespace amfrac
 
   template <int dim>
   void
+  Simulator<dim>::save_remeshing(CheckpointData &run) const
+  {
+    run.put_integer("remeshing.budget_spent", cell_budget_spent ? 1 : 0);
+    run.put("remeshing.zz_before", last_remeshing.zz_relative_before);
+    run.put("remeshing.zz_reached", last_remeshing.zz_relative_reached);
+    if (remeshed_plane.points.empty())
+      return;
+    std::vector<double> points;
+    for (const auto &p : remeshed_plane.points)
+      points.insert(points.end(), {p[0], p[1]});
+    run.put("mesh.plane.points", points);
+    const auto integers = [&](const std::string &name, const auto &items) {
+      std::vector<std::int64_t> flat;
+      for (const auto &item : items)
+        flat.insert(flat.end(), item.begin(), item.end());
+      run.put_integers("mesh.plane." + name, flat);
+    };
+    integers("triangles", remeshed_plane.triangles);
+    integers("quadrilaterals", remeshed_plane.quadrilaterals);
+    integers("edges", remeshed_plane.edges);
+    run.put_integers("mesh.plane.edge_ids",
+                     std::vector<std::int64_t>(remeshed_plane.edge_ids.begin(),
+                                               remeshed_plane.edge_ids.end()));
+  }
+
+
+
+  namespace
+  {
+    /** The items of N numbers each of a checkpoint's flat @p numbers. */
+    template <std::size_t N>
+    std::vector<std::array<unsigned int, N>>
+    unflatten(const std::vector<std::int64_t> &numbers)
+    {
+      std::vector<std::array<unsigned int, N>> items(numbers.size() / N);
+      for (std::size_t i = 0; i < items.size(); ++i)
+        for (std::size_t k = 0; k < N; ++k)
+          items[i][k] = numbers[N * i + k];
+      return items;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::restore_remeshing(const CheckpointData &run)
+  {
+    if (!run.has("remeshing.budget_spent"))
+      return false;
+    cell_budget_spent = run.get_integer("remeshing.budget_spent") == 1;
+    last_remeshing.zz_relative_before  = run.get_scalar("remeshing.zz_before");
+    last_remeshing.zz_relative_reached = run.get_scalar("remeshing.zz_reached");
+    if (!run.has("mesh.plane.points"))
+      return false;
+    PlaneMesh   plane;
+    const auto &points = run.get("mesh.plane.points");
+    for (std::size_t i = 0; i + 1 < points.size(); i += 2)
+      plane.points.emplace_back(points[i], points[i + 1]);
+    plane.triangles = unflatten<3>(run.get_integers("mesh.plane.triangles"));
+    plane.quadrilaterals
+      = unflatten<4>(run.get_integers("mesh.plane.quadrilaterals"));
+    plane.edges = unflatten<2>(run.get_integers("mesh.plane.edges"));
+    for (const auto id : run.get_integers("mesh.plane.edge_ids"))
+      plane.edge_ids.push_back(id);
+    // The remeshed mesh replaces the first one (no refinement leads from
+    // one to the other).
+    triangulation.clear();
+    make_laminate_mesh(
+      parameters.geometry, laminate, triangulation, false, &plane);
+    remeshed_plane = std::move(plane);
+    return true;
+  }
+
+
+
+  template <int dim>
+  void
   Simulator<dim>::execute_mesh_change()
   {
     std::vector<bool> refine, coarsen;
@@ -334,6 +414,9 @@ namespace amfrac
       throw InputError(
         "the checkpoint is of a " + std::to_string(run.get_integer("dimension"))
         + "D run, the parameters are of a " + std::to_string(dim) + "D one");
+    // A checkpoint of a wedge mesh the parameters do not make is refused
+    // by the cell count below.
+    const bool  remeshed = remeshes() && restore_remeshing(run);
     const auto &changes  = run.get_integers("mesh.changes");
     std::size_t position = 0;
     while (position < changes.size())
@@ -361,7 +444,7 @@ namespace amfrac
                          && !run.get_integers("cracks").empty();
     if (cracked)
       interfaces->add_cracks(triangulation, run.get_integers("cracks"));
-    if (changes.empty() && !cracked)
+    if (changes.empty() && !cracked && !remeshed)
       return;
     setup_after_refinement();
     if (interfaces)

@@ -193,11 +193,16 @@ namespace amfrac
           }
         by_estimate = by_estimate || over;
       }
-    // Wedges are remeshed by the estimate's size field, not flagged.
+    // Wedges are remeshed by the estimate's size field or the process
+    // zone's (the two are exclusive), not flagged.
     if (remeshes())
       {
-        if (by_estimate && !cell_budget_spent)
+        if (cell_budget_spent)
+          return;
+        if (by_estimate)
           change(true, zz_relative);
+        else if (a.process_zone_elements > 0 && plan_process_zone_remeshing())
+          change(false, -1);
         return;
       }
     // The process-zone rule refines one level per pass until the fronts
@@ -466,10 +471,7 @@ namespace amfrac
     typename CohesiveInterfaces<dim>::Snapshot snapshot;
     if (interfaces)
       snapshot = interfaces->snapshot(comm);
-    std::vector<double> density;
-    for (const auto &ply : plies)
-      density.push_back(ply.density);
-    ExplicitStateTransfer<dim> moving(dof_layer, density, comm);
+    ExplicitStateTransfer<dim> moving(dof_layer, ply_densities(plies), comm);
     moving.prepare(std::vector<const Vector *>(fields.begin(), fields.end()),
                    velocity);
     execute_mesh_change();
@@ -495,33 +497,11 @@ namespace amfrac
 
   namespace
   {
-    /** @p copies summed per reduced unknown of @p layer, in the order of
-     * the cells (the same on every rank: the mesh is replicated), not of
-     * the copies (numbered rank by rank), so that the sums do not depend
-     * on the partition: explicit runs amplify round-off. */
-    template <int dim>
-    dealii::Vector<double>
-    sums_by_cells(const TiedCopyDoFs<dim>      &layer,
-                  const dealii::Vector<double> &copies)
-    {
-      dealii::Vector<double>               sums(layer.n_dofs());
-      std::vector<types::global_dof_index> of_cell(
-        layer.get_fe().n_dofs_per_cell());
-      for (const auto &cell : layer.copy_handler().active_cell_iterators())
-        {
-          cell->get_dof_indices(of_cell);
-          for (const auto copy : of_cell)
-            sums[layer.reduced_index(copy)] += copies[copy];
-        }
-      return sums;
-    }
-
     /** The owned entries of @p reduced: per reduced unknown of @p layer,
      * the sum of @p numerators over its copies divided by that of
-     * @p denominators (sums_by_cells()). Ones give the mean of the copies
-     * (equal only to round-off across a bonded ply face: each is located
-     * in its own ply's old cells); the momentum rule's momentum and mass
-     * give the velocity. */
+     * @p denominators (TiedCopyDoFs::sums_over_copies(), independent of
+     * the partition): the momentum rule's momentum and mass give the
+     * velocity. */
     template <int dim>
     void
     ratio_of_sums(const TiedCopyDoFs<dim>       &layer,
@@ -530,8 +510,8 @@ namespace amfrac
                   TrilinosWrappers::MPI::Vector &reduced,
                   const MPI_Comm                 comm)
     {
-      const auto top    = sums_by_cells(layer, numerators);
-      const auto bottom = sums_by_cells(layer, denominators);
+      const auto top    = layer.sums_over_copies(numerators);
+      const auto bottom = layer.sums_over_copies(denominators);
       reduced.reinit(layer.locally_owned_dofs(), comm);
       for (const auto i : layer.locally_owned_dofs())
         reduced[i] = top[i] / bottom[i];
@@ -570,9 +550,7 @@ namespace amfrac
       dof_layer.expand_all(dof_layer.replicate(f < fields.size() ? *fields[f] :
                                                                    velocity),
                            copies[f]);
-    std::vector<double> density;
-    for (const auto &ply : plies)
-      density.push_back(ply.density);
+    const std::vector<double>                   density = ply_densities(plies);
     std::vector<dealii::Vector<double>>         carried;
     typename NonMatchingTransfer<dim>::Momentum momentum;
     // The nodal transfer last: n_outside() then counts new nodes, as in
@@ -592,10 +570,13 @@ namespace amfrac
       }
     if (interfaces)
       interfaces->setup(dof_layer, parameters.boundary_conditions.constants);
-    dealii::Vector<double> ones(dof_layer.n_copies());
-    ones = 1;
+    // The copies of a node are equal only to round-off across a bonded
+    // ply face (each is located in its own ply's old cells): their mean.
     for (unsigned int f = 0; f < fields.size(); ++f)
-      ratio_of_sums(dof_layer, carried[f], ones, *fields[f], comm);
+      {
+        fields[f]->reinit(dof_layer.locally_owned_dofs(), comm);
+        dof_layer.gather(carried[f], *fields[f]);
+      }
     ratio_of_sums(dof_layer, momentum.momentum, momentum.mass, velocity, comm);
 
     relevant_solution.reinit(dof_layer.locally_owned_dofs(),

@@ -2,13 +2,17 @@
 #include <amfrac/adaptivity/remeshing.h>
 #include <amfrac/simulator/simulator.h>
 #include <deal.II/base/function.h>
+#include <deal.II/numerics/rtree.h>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace amfrac
 {
   namespace
   {
+    namespace bgi = boost::geometry::index;
+
     /** The copy values of @p from on the cells of @p to, a layer of the
      * same element on a copy of the mesh (the same cells in the same
      * order). */
@@ -98,7 +102,14 @@ namespace amfrac
         rule.degree   = parameters.discretization.degree;
         rule.min_size = adaptivity.min_element_size;
         std::vector<double> sizes;
-        if (adaptivity.strategy == parameters::Adaptivity::Strategy::uniform)
+        if (!process_zone_sizes.empty())
+          {
+            sizes = std::exchange(process_zone_sizes, {});
+            for (double &size : sizes)
+              size = std::max(size, rule.min_size);
+          }
+        else if (adaptivity.strategy
+                 == parameters::Adaptivity::Strategy::uniform)
           for (const auto &cell : triangulation.active_cell_iterators())
             sizes.push_back(std::max(rule.min_size, 0.5 * in_plane_size(cell)));
         else
@@ -138,12 +149,13 @@ namespace amfrac
 
         {
           TimerOutput::Scope scope(timer, "remesh (Gmsh)");
+          // Gmsh first: if it fails, the mesh and the state are untouched.
+          PlaneMesh plane
+            = mesh_laminate_plane(parameters.geometry, field.function(), comm);
           triangulation.clear();
-          make_laminate_mesh(parameters.geometry,
-                             laminate,
-                             triangulation,
-                             false,
-                             field.function());
+          make_laminate_mesh(
+            parameters.geometry, laminate, triangulation, false, &plane);
+          remeshed_plane = std::move(plane);
           rebuild_after_mesh_change();
         }
         event.mesh_seconds = watch.wall_time();
@@ -167,6 +179,50 @@ namespace amfrac
         return true;
       }
   }
+
+  template <int dim>
+  bool
+  Simulator<dim>::plan_process_zone_remeshing()
+  {
+    if constexpr (dim != 3)
+      throw std::logic_error("remeshing is for 3D prism meshes");
+    else
+      {
+        const unsigned int n = parameters.adaptivity.process_zone_elements;
+        // The fronts in the plane: the size field is an in-plane one.
+        auto front = interfaces->front_points(process_zone_lengths(), comm);
+        if (front.empty())
+          return false;
+        for (auto &[point, reach] : front)
+          point[2] = 0;
+        const auto          tree = pack_rtree(front);
+        std::vector<double> sizes(triangulation.n_active_cells());
+        bool                needed = false;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          {
+            Point<3> center = cell->center();
+            center[2]       = 0;
+            std::vector<std::pair<Point<3>, double>> closest;
+            tree.query(bgi::nearest(center, 1), std::back_inserter(closest));
+            const double reach = closest[0].second, h = reach / n;
+            const double size = in_plane_size(cell);
+            const double distance
+              = std::max(0., center.distance(closest[0].first) - 0.5 * size);
+            // 1.5: Gmsh's triangles are about, not exactly, their size.
+            needed = needed || (distance <= reach && size > 1.5 * h);
+            sizes[cell->active_cell_index()]
+              = distance <= 2 * reach ?
+                  h :
+                  std::min(std::max(h, first_mesh_size),
+                           h + 0.5 * (distance - 2 * reach));
+          }
+        if (needed)
+          process_zone_sizes = std::move(sizes);
+        return needed;
+      }
+  }
+
+
 
   template class Simulator<2>;
   template class Simulator<3>;

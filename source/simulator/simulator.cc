@@ -1,3 +1,4 @@
+#include <amfrac/adaptivity/remeshing.h>
 #include <amfrac/base/first_failure.h>
 #include <amfrac/checkpoint/stop_signals.h>
 #include <amfrac/parameters/expressions.h>
@@ -109,6 +110,10 @@ namespace amfrac
                        parameters.adaptivity.during_history());
     for (const auto &cell : triangulation.active_cell_iterators())
       initial_cells.insert(cell->id());
+    if constexpr (dim == 3)
+      if (remeshes())
+        for (const auto &cell : triangulation.active_cell_iterators())
+          first_mesh_size = std::max(first_mesh_size, in_plane_size(cell));
     if (!parameters.cohesive.interfaces.empty() || parameters.cracks.active)
       interfaces
         = std::make_unique<CohesiveInterfaces<dim>>(prm.cohesive,

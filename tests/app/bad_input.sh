@@ -678,36 +678,34 @@ subsection Adaptivity
   set Strategy = uniform
   set Estimator = kelly
 end"
-# Remeshing during a load history (Newton and explicit runs): no
-# checkpoints by count, which replay refinements of the first mesh.
-expect prism_explicit_remeshing_checkpoint "a remeshed mesh is none" "$base
-$prism
-$explicit
-subsection Adaptivity
-  set Refine every = 2
-end
-subsection Checkpoint
-  set Every n steps = 5
-end"
-expect prism_adaptivity_process_zone "Adaptivity/Process zone elements (the size field" "$base
+# The process-zone rule on wedges: its own size field, in the plane, in
+# Newton runs.
+expect prism_process_zone_with_estimator "Process zone elements together with Refine every" "$base
 $prism
 subsection Cohesive interfaces
   set Interfaces = all
 end
 subsection Adaptivity
   set Process zone elements = 2
+  set Refine every          = 2
 end"
-expect prism_remeshing_checkpoint "a remeshed mesh is none" "$base
+expect prism_process_zone_directions "Process zone directions = x or y" "$base
 $prism
 subsection Cohesive interfaces
   set Interfaces = all
 end
 subsection Adaptivity
-  set Refine every = 2
-  set Strategy = error target
+  set Process zone elements   = 2
+  set Process zone directions = x
+end"
+expect prism_process_zone_explicit "Process zone elements in an explicit run" "$base
+$prism
+$explicit
+subsection Cohesive interfaces
+  set Interfaces = all
 end
-subsection Checkpoint
-  set Every n steps = 1
+subsection Adaptivity
+  set Process zone elements = 2
 end"
 expect adaptivity_max_cells "Maximum cells" "$base
 subsection Adaptivity

@@ -83,11 +83,13 @@ namespace
       const auto     prm = scene();
       const Laminate laminate(prm.geometry, prm.materials);
       if (size > 0)
-        make_laminate_mesh(prm.geometry,
-                           laminate,
-                           tria,
-                           false,
-                           [size](const Point<2> &) { return size; });
+        {
+          const PlaneMesh plane = mesh_laminate_plane(
+            prm.geometry,
+            [size](const Point<2> &) { return size; },
+            MPI_COMM_WORLD);
+          make_laminate_mesh(prm.geometry, laminate, tria, false, &plane);
+        }
       else
         make_laminate_mesh(prm.geometry, laminate, tria);
       dofs = std::make_unique<TiedCopyDoFs<3>>(tria, 1, ReferenceCells::Wedge);

@@ -247,6 +247,14 @@ namespace amfrac
     gather(const Vector<double>          &copies,
            TrilinosWrappers::MPI::Vector &reduced) const;
 
+    /** Per reduced unknown (all of them, on every rank), the sum of
+     * @p copies over its copies, added in the order of the cells: the
+     * same on every rank and for any number of ranks (the copies are
+     * numbered rank by rank), so that results do not depend on the
+     * partition by round-off, which explicit runs amplify. */
+    Vector<double>
+    sums_over_copies(const Vector<double> &copies) const;
+
     /** Bytes held by the layer (copies, tie map, support points). */
     std::size_t
     memory_consumption() const;

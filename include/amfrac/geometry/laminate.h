@@ -1,5 +1,6 @@
 #pragma once
 
+#include <amfrac/geometry/plane_mesh.h>
 #include <amfrac/geometry/stacking_sequence.h>
 #include <amfrac/material/orthotropic.h>
 #include <amfrac/parameters/parameters.h>
@@ -61,18 +62,27 @@ namespace amfrac
   /** The in-plane element size [mm] at a point of the (x, y) plane. */
   using InPlaneSize = std::function<double(const Point<2> &)>;
 
+  /** The in-plane mesh of a prism laminate's remeshing: its outline (the
+   * box, the open-hole plate or the .geo of Geometry/Mesh file) meshed
+   * by Gmsh on rank 0 of @p comm with the element size @p size, given to
+   * every rank. Throws an InputError (on every rank) if Gmsh fails; the
+   * caller's mesh is untouched. */
+  PlaneMesh
+  mesh_laminate_plane(const parameters::Geometry &geometry,
+                      const InPlaneSize          &size,
+                      const MPI_Comm              comm);
+
   /** With @p region_along_plies (3D), the Refinement region is refined
    * in the plane of the plies only (keep_refinement_in_plane()), as runs
    * that adapt during their load history refine. A prism laminate given
-   * @p in_plane_size is meshed by Gmsh with that size (its outline: the
-   * box, the open-hole plate or the .geo of Geometry/Mesh file), the
-   * global remeshing of an adaptive run. */
+   * @p plane (mesh_laminate_plane(), or a checkpoint's) is that in-plane
+   * mesh extruded ply by ply: the global remeshing of an adaptive run. */
   template <int dim>
   void
   make_laminate_mesh(const parameters::Geometry &geometry,
                      const Laminate             &laminate,
                      Triangulation<dim>         &triangulation,
                      const bool                  region_along_plies = false,
-                     const InPlaneSize          &in_plane_size      = {});
+                     const PlaneMesh            *plane              = nullptr);
 
 } // namespace amfrac

@@ -56,6 +56,18 @@ namespace amfrac
   template <int dim>
   std::vector<PlyProperties<dim>>
   make_ply_table(const Laminate &laminate, const parameters::Materials &m);
+
+  /** The density of every ply of @p plies, by material id (the mass of
+   * the explicit state transfers). */
+  template <int dim>
+  std::vector<double>
+  ply_densities(const std::vector<PlyProperties<dim>> &plies)
+  {
+    std::vector<double> densities;
+    for (const auto &ply : plies)
+      densities.push_back(ply.density);
+    return densities;
+  }
 } // namespace amfrac
 
 namespace amfrac

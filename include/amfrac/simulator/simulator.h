@@ -410,7 +410,17 @@ namespace amfrac
     };
     RemeshingEvent last_remeshing;
     bool           cell_budget_spent = false;
-    Vector         first_guess;
+    /** The in-plane mesh of the last remeshing (empty before one): what a
+     * checkpoint keeps to rebuild the mesh, which no refinement of the
+     * first mesh gives. */
+    PlaneMesh remeshed_plane;
+    /** The process-zone rule on wedges: the size per active cell the next
+     * remeshing meshes to (empty: the ZZ estimate's), and the largest
+     * in-plane size of the first mesh, which the field never exceeds
+     * (as hexahedra are never coarsened below the first mesh). */
+    std::vector<double> process_zone_sizes;
+    double              first_mesh_size = 0;
+    Vector              first_guess;
 
     /** Checkpoints: the store (nullptr for refinement cycles, which
      * cannot resume), the checkpoint being resumed from (nullptr on a
@@ -469,9 +479,18 @@ namespace amfrac
      * being resumed (the mesh was restored by resume()). */
     void
     restore_common();
-    /** Replay the mesh changes of the checkpoint on the initial mesh. */
+    /** Replay the mesh changes of the checkpoint on the initial mesh, or
+     * rebuild the mesh of its last remeshing. */
     void
     restore_mesh(const CheckpointData &run);
+    /** Wedge meshes: the remeshing state (the cell budget, the stall
+     * rule's errors) and the in-plane mesh of the last remeshing. */
+    void
+    save_remeshing(CheckpointData &run) const;
+    /** The remeshing state of save_remeshing(); true if the mesh was
+     * rebuilt from the checkpoint's in-plane mesh (a remeshed run). */
+    bool
+    restore_remeshing(const CheckpointData &run);
     /** InputError naming Kinematics if the checkpoint was written with
      * the other kinematics. */
     void
@@ -612,6 +631,13 @@ namespace amfrac
     bool
     remesh_carrying(const std::vector<dealii::Vector<double>> &copies,
                     const Carry                               &carry);
+    /** The process-zone rule on wedges (Adaptivity/Process zone
+     * elements): true, with process_zone_sizes filled, if a cell within
+     * l_cz of a front is coarser than 1.5 l_cz / n; the sizes are
+     * l_cz / n within 2 l_cz of the front and grow linearly (by half the
+     * distance) to first_mesh_size beyond. */
+    bool
+    plan_process_zone_remeshing();
     /** Whether the mesh adapts by global remeshing (wedges). */
     bool
     remeshes() const
