@@ -114,6 +114,15 @@ endif()
 # a remeshing's times are left out).
 if(ADAPTIVITY)
   compare_ranks(adaptivity.csv "one and two ranks adapt differently")
+  # ADAPTIVITY_ROWS: the mesh changes the comparison needs at least.
+  if(ADAPTIVITY_ROWS)
+    file(STRINGS ${WORKDIR}/np1/output/adaptivity.csv rows)
+    list(LENGTH rows n)
+    math(EXPR n "${n} - 1")
+    if(n LESS ADAPTIVITY_ROWS)
+      message(FATAL_ERROR "${n} mesh changes, ${ADAPTIVITY_ROWS} expected")
+    endif()
+  endif()
 endif()
 # With BUCKLING: the same load factors and (normalized) modes. The Lanczos
 # sequence rounds differently on two ranks and stops at a residual of 1e-8,

@@ -213,8 +213,12 @@ namespace amfrac
     element.coarse_cell = cell->id().get_coarse_cell_id();
     element.cell        = cell->id();
     element.face        = face;
-    element.triangle
-      = cell->face(face)->reference_cell() == ReferenceCells::Triangle;
+    if constexpr (dim == 3)
+      if (cell->face(face)->reference_cell() == ReferenceCells::Triangle)
+        for (const unsigned int l : cell->face(face)->line_indices())
+          element.triangle_edge
+            = std::max(element.triangle_edge,
+                       cell->face(face)->line(l)->diameter());
     element.active_cell = cell->active_cell_index();
     element.box         = coarse_cell_box<dim>(cell);
     element.interface   = is_crack(cell, face) ?

@@ -65,12 +65,16 @@ namespace amfrac
               {
                 // On a face longer than l_cz the nearest point across the
                 // front may be farther than l_cz: look as far as the face
-                // is long, so that a coarse mesh sees its fronts (a
-                // triangle's legs are sqrt(2 area) long).
-                const double area
-                  = std::accumulate(element.JxW.begin(), element.JxW.end(), 0.);
+                // is long, so that a coarse mesh sees its fronts. A
+                // triangle's points may be an edge apart, more than the
+                // sqrt(area) of a square.
                 const double face_size
-                  = std::pow((element.triangle ? 2 : 1) * area, 1. / (dim - 1));
+                  = element.triangle_edge > 0 ?
+                      element.triangle_edge :
+                      std::pow(std::accumulate(element.JxW.begin(),
+                                               element.JxW.end(),
+                                               0.),
+                               1. / (dim - 1));
                 if (element.converged[q].history.debonded)
                   continue;
                 std::vector<Point<dim>> closest;

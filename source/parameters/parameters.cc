@@ -1714,27 +1714,31 @@ namespace amfrac
       refuse(process_zone && time.explicit_dynamics,
              "Adaptivity/Process zone elements in an explicit run (not yet: "
              "use Error threshold)");
-      refuse(adaptivity.active()
+      // Cycles and the estimator's triggers remesh to the ZZ size field;
+      // every remeshing (the process-zone rule's too) extrudes the plane.
+      const bool by_estimate = adaptivity.active() || adaptivity.by_estimator();
+      const bool remeshing = adaptivity.active() || adaptivity.during_history();
+      refuse(by_estimate
                && adaptivity.estimator == Adaptivity::Estimator::kelly,
              "Adaptivity/Estimator = kelly (prisms are remeshed by the ZZ "
              "estimator)");
-      refuse(adaptivity.active()
+      refuse(by_estimate
                && adaptivity.strategy != Adaptivity::Strategy::error_target
                && adaptivity.strategy != Adaptivity::Strategy::uniform,
              "Adaptivity/Strategy = fixed fraction or fixed number (prisms "
              "are remeshed to a size field: Strategy = error target, or "
              "uniform to halve every size)");
-      refuse(adaptivity.active() && geometry.mesh_distortion > 0,
+      refuse(remeshing && geometry.mesh_distortion > 0,
              "adaptivity with a Geometry/Mesh distortion");
-      refuse(adaptivity.active() && !geometry.imperfection.empty(),
+      refuse(remeshing && !geometry.imperfection.empty(),
              "adaptivity with a Geometry/Imperfection (remeshing sizes the "
              "columns of an extruded mesh)");
-      refuse(adaptivity.active() && geometry.mesh_file.empty()
+      refuse(remeshing && geometry.mesh_file.empty()
                && geometry.hole_radius == 0 && geometry.global_refinements > 0,
              "adaptivity on the box with Global refinements > 0 (they also "
              "split the plies through the thickness, which a remeshing "
              "would lose: set Elements per ply instead)");
-      refuse(adaptivity.active() && geometry.mesh_file.size() > 4
+      refuse(remeshing && geometry.mesh_file.size() > 4
                && geometry.mesh_file.substr(geometry.mesh_file.size() - 4)
                     == ".msh",
              "adaptivity on a Geometry/Mesh file that is a .msh (a mesh "
@@ -2383,8 +2387,11 @@ namespace amfrac
                         Patterns::Double(0),
                         "Prism meshes (global remeshing): the smallest "
                         "in-plane element size a remeshing may ask of Gmsh "
-                        "[mm] (0: no bound besides a quarter of the old "
-                        "size per remeshing).");
+                        "[mm] (0: no bound besides, for the ZZ size field, "
+                        "a quarter of the old size per remeshing; the "
+                        "process-zone rule asks for l_cz / n at once, and "
+                        "takes this size as fine enough where l_cz / n is "
+                        "smaller).");
       prm.leave_subsection();
     }
 

@@ -414,8 +414,13 @@ namespace amfrac
       throw InputError(
         "the checkpoint is of a " + std::to_string(run.get_integer("dimension"))
         + "D run, the parameters are of a " + std::to_string(dim) + "D one");
-    // A checkpoint of a wedge mesh the parameters do not make is refused
-    // by the cell count below.
+    if (run.has("mesh.plane.points") && !remeshes())
+      throw InputError("Geometry/Element shape",
+                       "the checkpoint is of a run on prisms remeshed by "
+                       "Gmsh, these parameters make hexahedra: resume with "
+                       "the parameters of the run that wrote it");
+    // A checkpoint of another wedge mesh is refused by the cell count
+    // below.
     const bool  remeshed = remeshes() && restore_remeshing(run);
     const auto &changes  = run.get_integers("mesh.changes");
     std::size_t position = 0;

@@ -189,6 +189,10 @@ namespace amfrac
     else
       {
         const unsigned int n = parameters.adaptivity.process_zone_elements;
+        // Minimum element size bounds the remeshed sizes: a front whose
+        // l_cz / n lies below it is fine at that size, or the rule would
+        // remesh after every step.
+        const double smallest = parameters.adaptivity.min_element_size;
         // The fronts in the plane: the size field is an in-plane one.
         auto front = interfaces->front_points(process_zone_lengths(), comm);
         if (front.empty())
@@ -204,8 +208,9 @@ namespace amfrac
             center[2]       = 0;
             std::vector<std::pair<Point<3>, double>> closest;
             tree.query(bgi::nearest(center, 1), std::back_inserter(closest));
-            const double reach = closest[0].second, h = reach / n;
-            const double size = in_plane_size(cell);
+            const double reach = closest[0].second;
+            const double h     = std::max(reach / n, smallest);
+            const double size  = in_plane_size(cell);
             const double distance
               = std::max(0., center.distance(closest[0].first) - 0.5 * size);
             // 1.5: Gmsh's triangles are about, not exactly, their size.

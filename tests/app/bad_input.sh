@@ -678,22 +678,38 @@ subsection Adaptivity
   set Strategy = uniform
   set Estimator = kelly
 end"
+# The same during a load history: the threshold's remeshing follows
+# Strategy too, and every remeshing extrudes the plane.
+interfaces='subsection Cohesive interfaces
+  set Interfaces = all
+end'
+expect prism_history_strategy "Adaptivity/Strategy = fixed fraction" "$base
+$prism
+$interfaces
+subsection Adaptivity
+  set Error threshold = 0.05
+end"
+expect prism_process_zone_refined_box "set Elements per ply instead" "$base
+$prism
+$interfaces
+subsection Geometry
+  set Global refinements = 1
+end
+subsection Adaptivity
+  set Process zone elements = 2
+end"
 # The process-zone rule on wedges: its own size field, in the plane, in
 # Newton runs.
 expect prism_process_zone_with_estimator "Process zone elements together with Refine every" "$base
 $prism
-subsection Cohesive interfaces
-  set Interfaces = all
-end
+$interfaces
 subsection Adaptivity
   set Process zone elements = 2
   set Refine every          = 2
 end"
 expect prism_process_zone_directions "Process zone directions = x or y" "$base
 $prism
-subsection Cohesive interfaces
-  set Interfaces = all
-end
+$interfaces
 subsection Adaptivity
   set Process zone elements   = 2
   set Process zone directions = x
@@ -701,9 +717,7 @@ end"
 expect prism_process_zone_explicit "Process zone elements in an explicit run" "$base
 $prism
 $explicit
-subsection Cohesive interfaces
-  set Interfaces = all
-end
+$interfaces
 subsection Adaptivity
   set Process zone elements = 2
 end"

@@ -65,6 +65,14 @@ endforeach()
 
 amfrac_run(${NP} 0 whole.log whole.prm)
 amfrac_run(${NP} 75 split.log split.prm)
+# EXPECT_FIRST: what the first part must have done before the stop (a
+# remeshing), so that the resume starts from that state.
+if(EXPECT_FIRST)
+  file(READ ${WORKDIR}/split.log first_part)
+  if(NOT first_part MATCHES "${EXPECT_FIRST}")
+    message(FATAL_ERROR "the first part never printed '${EXPECT_FIRST}'")
+  endif()
+endif()
 file(WRITE ${WORKDIR}/first_part_done "")
 endif()
 if(STAGE STREQUAL "runs")

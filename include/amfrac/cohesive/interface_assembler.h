@@ -513,8 +513,9 @@ namespace amfrac
       /** The lower cell itself (checkpoints). */
       CellId       cell;
       unsigned int face; ///< of the lower cell
-      /** Whether the face is a triangle (a wedge's top or bottom). */
-      bool triangle = false;
+      /** A triangular face's (a wedge's top or bottom) longest edge; 0
+       * for other faces. */
+      double triangle_edge = 0;
       /** The lower cell in the reference coordinates of its coarse
        * (level-0) cell: lower and upper corner. */
       std::pair<Point<dim>, Point<dim>> box;
