@@ -500,9 +500,9 @@ namespace amfrac
   CohesiveInterfaces<dim>::dissipated_densities(const PointState &s) const
   {
     const double stored = stored_energy(s);
-    return {s.history.debonded ? s.bond_work : s.bond_work - stored,
-            s.history.debonded ? s.friction_work - stored : s.friction_work,
-            s.viscous_work};
+    return {{s.history.debonded ? s.bond_work : s.bond_work - stored,
+             s.history.debonded ? s.friction_work - stored : s.friction_work,
+             s.viscous_work}};
   }
 
 

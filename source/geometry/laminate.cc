@@ -3,6 +3,7 @@
 #include <amfrac/geometry/in_plane_refinement.h>
 #include <amfrac/geometry/laminate.h>
 #include <amfrac/geometry/plane_mesh.h>
+#include <amfrac/geometry/volume_mesh.h>
 #include <amfrac/parameters/expressions.h>
 #include <amfrac/parameters/input_error.h>
 #include <cmath>
@@ -243,11 +244,46 @@ namespace amfrac
     }
 
 
-    /** The laminate of a Gmsh in-plane mesh (Geometry/Mesh file, or an
-     * open hole on prisms; @p given: a remeshing's), extruded through the
-     * element layers. */
+    /** The laminate of a 3D Geometry/Mesh file, its plies from the
+     * file's physical volumes; false if the file is 2D. */
+    bool
+    make_volume_laminate(const parameters::Geometry &geometry,
+                         const Laminate             &laminate,
+                         Triangulation<3>           &triangulation)
+    {
+      const std::string &file = geometry.mesh_file;
+      const std::string  extension
+        = file.size() > 4 ? file.substr(file.size() - 4) : "";
+      if (extension != ".msh" && extension != ".geo")
+        return false;
+      const VolumeMesh volume = make_mesh_on_root<VolumeMesh>(
+        [&]() {
+          return read_volume_mesh(file,
+                                  laminate.n_plies(),
+                                  geometry.global_refinements);
+        },
+        triangulation.get_communicator());
+      if (volume.empty())
+        return false;
+      const bool wedges = volume.cells[0].size() == 6;
+      if (wedges != geometry.prisms)
+        throw InputError("Geometry/Element shape",
+                         std::string(geometry.prisms ? "prism" : "hexahedron")
+                           + " does not match '" + file + "', a mesh of "
+                           + (wedges ? "wedges (set Element shape = prism)" :
+                                       "hexahedra (set Element shape = "
+                                       "hexahedron)"));
+      create_volume_mesh(volume, triangulation);
+      return true;
+    }
+
+
+    /** The laminate of a Gmsh mesh (Geometry/Mesh file, or an open hole
+     * on prisms; @p given: a remeshing's in-plane mesh): a 2D mesh is
+     * extruded through the element layers. Returns whether the file gave
+     * the plies (a 3D file). */
     template <int dim>
-    void
+    bool
     make_gmsh_laminate(const parameters::Geometry &geometry,
                        const Laminate             &laminate,
                        Triangulation<dim>         &triangulation,
@@ -265,9 +301,11 @@ namespace amfrac
         }
       else
         {
+          if (!given && make_volume_laminate(geometry, laminate, triangulation))
+            return true;
           const PlaneMesh plane
             = given ? *given :
-                      make_plane_mesh_on_root(
+                      make_mesh_on_root<PlaneMesh>(
                         [&]() {
                           if (geometry.mesh_file.empty())
                             return mesh_open_hole_plane(geometry.length,
@@ -301,6 +339,7 @@ namespace amfrac
                              triangulation);
           if (geometry.mesh_file.empty() && geometry.hole_radius > 0)
             attach_hole_edge_manifold(geometry, triangulation);
+          return false;
         }
     }
   } // namespace
@@ -312,7 +351,7 @@ namespace amfrac
                       const InPlaneSize          &size,
                       const MPI_Comm              comm)
   {
-    return make_plane_mesh_on_root(
+    return make_mesh_on_root<PlaneMesh>(
       [&]() {
         if (geometry.mesh_file.empty())
           return mesh_open_hole_plane(geometry.length,
@@ -327,7 +366,7 @@ namespace amfrac
 
 
   template <int dim>
-  void
+  bool
   make_laminate_mesh(const parameters::Geometry &geometry,
                      const Laminate             &laminate,
                      Triangulation<dim>         &triangulation,
@@ -364,8 +403,10 @@ namespace amfrac
     const bool from_gmsh
       = !geometry.mesh_file.empty()
         || (geometry.prisms && (geometry.hole_radius > 0 || plane));
+    bool plies_from_file = false;
     if (from_gmsh)
-      make_gmsh_laminate(geometry, laminate, triangulation, plane);
+      plies_from_file
+        = make_gmsh_laminate(geometry, laminate, triangulation, plane);
     else if (geometry.hole_radius > 0)
       make_open_hole_mesh(geometry, laminate, triangulation);
     else if (geometry.prisms)
@@ -382,17 +423,19 @@ namespace amfrac
         triangulation, steps, Point<dim>(), box, /*colorize=*/true);
 
     for (const auto &cell : triangulation.active_cell_iterators())
-      {
-        const double z     = cell->center()[dim - 1];
-        const auto   upper = std::upper_bound(laminate.ply_boundaries.begin(),
-                                            laminate.ply_boundaries.end(),
-                                            z);
-        cell->set_material_id(
-          in_plane ?
-            0 :
-            std::min<unsigned int>(upper - laminate.ply_boundaries.begin() - 1,
-                                   laminate.n_plies() - 1));
-      }
+      if (!plies_from_file)
+        {
+          const double z     = cell->center()[dim - 1];
+          const auto   upper = std::upper_bound(laminate.ply_boundaries.begin(),
+                                              laminate.ply_boundaries.end(),
+                                              z);
+          cell->set_material_id(
+            in_plane ?
+              0 :
+              std::min<unsigned int>(upper - laminate.ply_boundaries.begin()
+                                       - 1,
+                                     laminate.n_plies() - 1));
+        }
     // Wedges cannot be refined, and Gmsh meshes are refined by Gmsh.
     if (!geometry.prisms && !from_gmsh)
       triangulation.refine_global(geometry.global_refinements);
@@ -474,6 +517,7 @@ namespace amfrac
             triangulation.execute_coarsening_and_refinement();
           }
       }
+    return plies_from_file;
   }
 
   namespace
@@ -596,13 +640,13 @@ namespace amfrac
 
 
 
-  template void
+  template bool
   make_laminate_mesh<2>(const parameters::Geometry &,
                         const Laminate &,
                         Triangulation<2> &,
                         const bool,
                         const PlaneMesh *);
-  template void
+  template bool
   make_laminate_mesh<3>(const parameters::Geometry &,
                         const Laminate &,
                         Triangulation<3> &,

@@ -1,5 +1,7 @@
 #include <algorithm>
+#include <amfrac/geometry/gmsh_session.h>
 #include <amfrac/geometry/plane_mesh.h>
+#include <amfrac/geometry/volume_mesh.h>
 #include <amfrac/parameters/input_error.h>
 #include <cmath>
 #include <deal.II/base/mpi.templates.h>
@@ -15,37 +17,6 @@ namespace amfrac
   namespace
   {
     const std::string mesh_file = "Geometry/Mesh file";
-
-    /** Gmsh is one global state: a session initializes it quietly and
-     * single-threaded (the same mesh on every run) and finalizes it
-     * whatever happens. */
-    class GmshSession
-    {
-    public:
-      GmshSession()
-      {
-        gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
-        gmsh::option::setNumber("General.Terminal", 0);
-        gmsh::option::setNumber("General.NumThreads", 1);
-        gmsh::logger::start();
-      }
-
-      ~GmshSession()
-      {
-        gmsh::finalize();
-      }
-
-      /** Throw an InputError for @p parameter if Gmsh has logged an error
-       * (it does not always throw). */
-      static void
-      check(const std::string &parameter, const std::string &what)
-      {
-        std::string error;
-        gmsh::logger::getLastError(error);
-        if (!error.empty())
-          throw InputError(parameter, "Gmsh failed " + what + ": " + error);
-      }
-    };
 
     double
     signed_area(const PlaneMesh &plane, const unsigned int *v)
@@ -93,17 +64,14 @@ namespace amfrac
       gmsh::model::mesh::getElements(types, tags, nodes, 2);
       for (std::size_t t = 0; t < types.size(); ++t)
         {
-          std::string         name;
-          int                 dim, order, n_nodes, n_primary;
-          std::vector<double> local;
-          gmsh::model::mesh::getElementProperties(
-            types[t], name, dim, order, n_nodes, local, n_primary);
           if (types[t] != 2 && types[t] != 3)
             throw InputError(parameter,
-                             "the mesh has elements of type '" + name
+                             "the mesh has elements of type '"
+                               + GmshSession::element_name(types[t])
                                + "': only 3-node triangles and 4-node "
                                  "quadrilaterals can be extruded (mesh with "
                                  "Mesh.ElementOrder = 1)");
+          const int n_nodes = types[t] == 2 ? 3 : 4;
           for (std::size_t e = 0; e < tags[t].size(); ++e)
             {
               std::array<unsigned int, 4> v{};
@@ -212,29 +180,19 @@ namespace amfrac
       throw InputError(mesh_file,
                        "'" + file + "' is neither a .geo nor a .msh file");
     GmshSession session;
-    try
-      {
-        gmsh::open(file);
-        GmshSession::check(mesh_file, "to read '" + file + "'");
-        if (extension == ".geo")
-          {
-            gmsh::option::setNumber("Mesh.MeshSizeFactor", size_factor);
-            gmsh::model::mesh::generate(2);
-          }
-        else
-          for (unsigned int r = 0; r < refinements; ++r)
-            gmsh::model::mesh::refine();
-        GmshSession::check(mesh_file, "to mesh '" + file + "'");
-      }
-    catch (const InputError &)
-      {
-        throw;
-      }
-    catch (...)
-      {
-        GmshSession::check(mesh_file, "on '" + file + "'");
-        throw InputError(mesh_file, "Gmsh failed on '" + file + "'");
-      }
+    GmshSession::run(mesh_file, file, [&]() {
+      gmsh::open(file);
+      GmshSession::check(mesh_file, "to read '" + file + "'");
+      if (extension == ".geo")
+        {
+          gmsh::option::setNumber("Mesh.MeshSizeFactor", size_factor);
+          gmsh::model::mesh::generate(2);
+        }
+      else
+        for (unsigned int r = 0; r < refinements; ++r)
+          gmsh::model::mesh::refine();
+      GmshSession::check(mesh_file, "to mesh '" + file + "'");
+    });
     return collect_plane_mesh(mesh_file);
   }
 
@@ -247,25 +205,15 @@ namespace amfrac
     if (!std::ifstream(file))
       throw InputError(mesh_file, "cannot open '" + file + "'");
     GmshSession session;
-    try
-      {
-        gmsh::open(file);
-        GmshSession::check(mesh_file, "to read '" + file + "'");
-        // The file may have meshed itself on opening (a Mesh command).
-        gmsh::model::mesh::clear();
-        use_size_field(size);
-        gmsh::model::mesh::generate(2);
-        GmshSession::check(mesh_file, "to remesh '" + file + "'");
-      }
-    catch (const InputError &)
-      {
-        throw;
-      }
-    catch (...)
-      {
-        GmshSession::check(mesh_file, "on '" + file + "'");
-        throw InputError(mesh_file, "Gmsh failed to remesh '" + file + "'");
-      }
+    GmshSession::run(mesh_file, file, [&]() {
+      gmsh::open(file);
+      GmshSession::check(mesh_file, "to read '" + file + "'");
+      // The file may have meshed itself on opening (a Mesh command).
+      gmsh::model::mesh::clear();
+      use_size_field(size);
+      gmsh::model::mesh::generate(2);
+      GmshSession::check(mesh_file, "to remesh '" + file + "'");
+    });
     return collect_plane_mesh(mesh_file);
   }
 
@@ -340,16 +288,16 @@ namespace amfrac
 
 
 
-  PlaneMesh
-  make_plane_mesh_on_root(const std::function<PlaneMesh()> &make,
-                          const MPI_Comm                    comm)
+  template <class Mesh>
+  Mesh
+  make_mesh_on_root(const std::function<Mesh()> &make, const MPI_Comm comm)
   {
-    PlaneMesh   plane;
+    Mesh        mesh;
     std::string error;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       try
         {
-          plane = make();
+          mesh = make();
         }
       catch (const InputError &e)
         {
@@ -359,18 +307,22 @@ namespace amfrac
       // in the broadcast.
       catch (const std::exception &e)
         {
-          error
-            = std::string("meshing the laminate's plane failed: ") + e.what();
+          error = std::string("meshing the laminate failed: ") + e.what();
         }
       catch (...)
         {
-          error = "meshing the laminate's plane failed in Gmsh";
+          error = "meshing the laminate failed in Gmsh";
         }
     error = Utilities::MPI::broadcast(comm, error, 0);
     if (!error.empty())
       throw InputError(error);
-    return Utilities::MPI::broadcast(comm, plane, 0);
+    return Utilities::MPI::broadcast(comm, mesh, 0);
   }
+
+  template PlaneMesh
+  make_mesh_on_root(const std::function<PlaneMesh()> &, const MPI_Comm);
+  template VolumeMesh
+  make_mesh_on_root(const std::function<VolumeMesh()> &, const MPI_Comm);
 
 
 

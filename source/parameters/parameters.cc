@@ -171,7 +171,15 @@ namespace amfrac
         "input error), the bottom and top of the laminate are z- and z+; "
         "every other curve (a hole, a notch) is traction free (boundary "
         "id 6). Length, Width and Elements along length/width are not "
-        "used.");
+        "used. A 3D file (a .msh of 3D elements, or a .geo with volumes, "
+        "meshed by Gmsh) is the laminate's volume mesh instead: 8-node hexahedra (Element shape = hexahedron) or 6-node "
+        "wedges (prism), each Global refinement splitting every element "
+        "into eight. The ply of an element is its physical volume named "
+        "'ply k', k = 1 .. the number of plies from the bottom of the "
+        "Stacking sequence (a ply's material axes turn about z; Ply "
+        "thickness and Elements per ply are not used); physical surfaces "
+        "named x-, x+, y-, y+, z-, z+ are the faces of those names, every "
+        "other boundary face is traction free.");
       prm.declare_entry("Refinement region",
                         "",
                         Patterns::Anything(),
@@ -1742,7 +1750,8 @@ namespace amfrac
                && geometry.mesh_file.substr(geometry.mesh_file.size() - 4)
                     == ".msh",
              "adaptivity on a Geometry/Mesh file that is a .msh (a mesh "
-             "without its geometry cannot be remeshed: give the .geo)");
+             "without its geometry cannot be remeshed: give the .geo of the "
+             "in-plane outline)");
       // Ply interfaces are the triangles between the layers of wedges.
       const bool interfaces = !cohesive.interfaces.empty();
       if (interfaces && cohesive.lobatto && discretization.degree > 1)

@@ -1,6 +1,7 @@
 #include <amfrac/adaptivity/remeshing.h>
 #include <amfrac/base/first_failure.h>
 #include <amfrac/checkpoint/stop_signals.h>
+#include <amfrac/geometry/volume_mesh.h>
 #include <amfrac/parameters/expressions.h>
 #include <amfrac/parameters/input_error.h>
 #include <amfrac/postprocess/damage_map.h>
@@ -33,7 +34,9 @@ namespace amfrac
       throw InputError("Boundary conditions/" + name + "/Type",
                        "the laminate has no face named '" + name
                          + "' (the sides of a Geometry/Mesh file are its "
-                           "physical curves named x-, x+, y-, y+)");
+                           "physical curves named x-, x+, y-, y+, or its "
+                           "physical surfaces of those names and z-, z+ "
+                           "in a 3D file)");
     }
   } // namespace
 
@@ -104,10 +107,33 @@ namespace amfrac
     , lever(prm.boundary_conditions)
   {
     TimerOutput::Scope scope(timer, "setup");
-    make_laminate_mesh(parameters.geometry,
-                       laminate,
-                       triangulation,
-                       parameters.adaptivity.during_history());
+    const bool         plies_from_file
+      = make_laminate_mesh(parameters.geometry,
+                           laminate,
+                           triangulation,
+                           parameters.adaptivity.during_history());
+    // Wedges adapt by remeshing the in-plane outline, which a 3D file
+    // does not have.
+    if (plies_from_file && remeshes()
+        && (parameters.adaptivity.active()
+            || parameters.adaptivity.during_history()))
+      throw InputError("Geometry/Mesh file",
+                       "a 3D mesh of wedges cannot be combined with "
+                       "adaptivity (wedges adapt by remeshing an in-plane "
+                       "outline: give a 2D .geo, or hexahedra)");
+    if constexpr (dim == 3)
+      if (plies_from_file)
+        {
+          if (!parameters.cohesive.interfaces.empty())
+            refuse_interfaces_between_distant_plies(
+              triangulation,
+              parameters.cohesive.interfaces,
+              "Cohesive interfaces/Interfaces");
+          refuse_interfaces_between_distant_plies(
+            triangulation,
+            parameters.contact.unbonded_interfaces,
+            "Contact/Unbonded interfaces");
+        }
     for (const auto &cell : triangulation.active_cell_iterators())
       initial_cells.insert(cell->id());
     if constexpr (dim == 3)

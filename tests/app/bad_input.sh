@@ -801,6 +801,68 @@ subsection Adaptivity
   set Refinement cycles = 2
   set Strategy = error target
 end"
+# 3D mesh files: the plies are physical volumes 'ply 1' .. 'ply 4' of a
+# unit square extruded ply by ply (quadrilaterals: hexahedra; triangles:
+# wedges; without Layers: tetrahedra).
+volume() { # volume N-PLIES RECOMBINE LAYERS
+  printf 'Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {1, 1, 0};
+Point(4) = {0, 1, 0}; Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4};
+Line(4) = {4, 1}; Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
+Transfinite Curve{1 : 4} = 3; Transfinite Surface{1};%s
+top = 1;
+For p In {1 : %s}
+  out[] = Extrude {0, 0, 0.125} { Surface{top}; %s };
+  Physical Volume(Sprintf("ply %%g", p)) = {out[1]};
+  top = out[0];
+EndFor\n' "$2" "$1" "$3"
+}
+volume 4 ' Recombine Surface{1};' 'Layers{1}; Recombine;' > hexahedra.geo
+volume 3 ' Recombine Surface{1};' 'Layers{1}; Recombine;' > three_plies.geo
+volume 4 '' 'Layers{1}; Recombine;' > wedges.geo
+volume 4 '' '' > tetrahedra.geo
+expect volume_missing_ply "has no physical volume named 'ply 4'" "$base
+$(mesh three_plies.geo)"
+expect volume_tetrahedra "has elements of type 'Tetrahedron 4'" "$base
+$(mesh tetrahedra.geo)"
+expect volume_shape "Element shape>: prism does not match" "$base
+$(mesh hexahedra.geo '  set Element shape = prism')"
+expect volume_shape_wedges "Element shape>: hexahedron does not match" "$base
+$(mesh wedges.geo)"
+expect volume_wedges_adaptivity "cannot be combined with adaptivity" "$base
+$(mesh wedges.geo '  set Element shape = prism')
+subsection Adaptivity
+  set Refinement cycles = 2
+  set Strategy = error target
+end"
+# Ply 2 stops at x = 1 and ply 3 lies on ply 1 beyond it: no cohesive
+# interface can join plies 1 and 3.
+printf 'Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {1, 1, 0};
+Point(4) = {0, 1, 0}; Point(5) = {2, 0, 0}; Point(6) = {2, 1, 0};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
+Line(5) = {2, 5}; Line(6) = {5, 6}; Line(7) = {6, 3};
+Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
+Curve Loop(2) = {5, 6, 7, -2}; Plane Surface(2) = {2};
+Transfinite Curve{1 : 7} = 2; Transfinite Surface{1, 2}; Recombine Surface{1, 2};
+a[] = Extrude {0, 0, 0.125} { Surface{1}; Layers{1}; Recombine; };
+b[] = Extrude {0, 0, 0.125} { Surface{2}; Layers{1}; Recombine; };
+c[] = Extrude {0, 0, 0.125} { Surface{a[0]}; Layers{1}; Recombine; };
+d[] = Extrude {0, 0, 0.125} { Surface{c[0]}; Layers{1}; Recombine; };
+e[] = Extrude {0, 0, 0.125} { Surface{b[0]}; Layers{1}; Recombine; };
+Physical Volume("ply 1") = {a[1], b[1]};
+Physical Volume("ply 2") = {c[1]};
+Physical Volume("ply 3") = {d[1], e[1]};\n' > internal_drop.geo
+expect volume_unbonded_skipped_interface "Contact/Unbonded interfaces>: ply 1 touches ply 3" "$base
+$(mesh internal_drop.geo '  set Stacking sequence = [0/90/0]')
+$explicit
+$contact
+subsection Contact
+  set Unbonded interfaces = 1
+end"
+expect volume_skipped_interface "Cohesive interfaces/Interfaces>: ply 1 touches ply 3" "$base
+$(mesh internal_drop.geo '  set Stacking sequence = [0/90/0]')
+subsection Cohesive interfaces
+  set Interfaces = all
+end"
 expect contact_penalty "Contact/Penalty" "$base
 $explicit
 $contact

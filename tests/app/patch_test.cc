@@ -183,10 +183,11 @@ end
   void
   check_patch(const std::string &degree,
               const bool         prisms    = false,
-              const std::string &mesh_file = "")
+              const std::string &mesh_file = "",
+              const bool         refine    = false)
   {
     using amfrac_test::substitute;
-    const std::string region = prisms || !mesh_file.empty() ?
+    const std::string region = prisms || (!mesh_file.empty() && !refine) ?
                                  "" :
                                  "  set Refinement region     = x < 1.5\n"
                                  "  set Region refinements    = 1";
@@ -198,12 +199,14 @@ end
                  prisms ? "prism" : "hexahedron"),
       "@REGION@",
       region);
-    // A Gmsh outline instead of the distorted box (and once refined).
+    // A Gmsh file instead of the distorted box (and once refined, by
+    // Gmsh, or else in the Refinement region).
     if (!mesh_file.empty())
       text = substitute(text,
                         "set Mesh distortion       = 0.25",
                         "set Mesh file = " + mesh_file
-                          + "\n  set Global refinements = 1");
+                          + "\n  set Global refinements = "
+                          + (refine ? "0" : "1"));
     const auto     prm = parameters::Parameters::from_string(text);
     const Laminate laminate(prm.geometry, prm.materials);
     const auto     plies = make_ply_table<dim>(laminate, prm.materials);
@@ -260,6 +263,22 @@ main(int argc, char *argv[])
           check_patch<3, LaminatePatchField>(degree,
                                              false,
                                              meshes + "trapezoid_quads.msh");
+          // 3D .msh files, the plies from their physical volumes: the
+          // disk's wedges, and hexahedra extruded along x (turned by the
+          // reader).
+          check_patch<3, LaminatePatchField>(degree,
+                                             true,
+                                             meshes + "disk_plies.msh");
+          check_patch<3, LaminatePatchField>(degree,
+                                             false,
+                                             meshes + "block_plies_x.msh");
+          // Unstructured hexahedra of a 3D .geo whose neighbours number
+          // their vertices from unrelated corners, refined in a region
+          // (hanging nodes across such faces).
+          check_patch<3, LaminatePatchField>(degree,
+                                             false,
+                                             meshes + "trapezoid_plies.geo",
+                                             /*refine=*/true);
         }
     }
   return amfrac_test::summary();

@@ -76,9 +76,11 @@ namespace amfrac
    * in the plane of the plies only (keep_refinement_in_plane()), as runs
    * that adapt during their load history refine. A prism laminate given
    * @p plane (mesh_laminate_plane(), or a checkpoint's) is that in-plane
-   * mesh extruded ply by ply: the global remeshing of an adaptive run. */
+   * mesh extruded ply by ply: the global remeshing of an adaptive run.
+   * Returns whether the plies came from a 3D Geometry/Mesh file's
+   * physical volumes (such a mesh cannot be remeshed). */
   template <int dim>
-  void
+  bool
   make_laminate_mesh(const parameters::Geometry &geometry,
                      const Laminate             &laminate,
                      Triangulation<dim>         &triangulation,

@@ -82,13 +82,14 @@ namespace amfrac
   open_hole_element_size(const parameters::Geometry &geometry);
 
   /**
-   * Run @p make on rank 0 of @p comm and give its mesh to every rank (a
-   * shared triangulation needs the same coarse mesh everywhere, and Gmsh
-   * is a global state): an InputError on rank 0 is thrown on every rank.
+   * Run @p make on rank 0 of @p comm and give its mesh (a PlaneMesh or a
+   * VolumeMesh) to every rank (a shared triangulation needs the same
+   * coarse mesh everywhere, and Gmsh is a global state): an InputError on
+   * rank 0 is thrown on every rank.
    */
-  PlaneMesh
-  make_plane_mesh_on_root(const std::function<PlaneMesh()> &make,
-                          const MPI_Comm                    comm);
+  template <class Mesh>
+  Mesh
+  make_mesh_on_root(const std::function<Mesh()> &make, const MPI_Comm comm);
 
   /**
    * Extrude @p plane through the thickness coordinates @p z (bottom to
