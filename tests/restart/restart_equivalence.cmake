@@ -5,7 +5,8 @@
 # checkpoints (every field, every history, the ledger) must agree to
 # relative RTOL entry by entry (DIFF: checkpoint_diff), and so must
 # history.csv and, with ADAPTIVITY, adaptivity.csv (to RTOL, and absolute
-# ABSOLUTE for columns of round-off such as the energy balance error). NP ranks run the whole
+# ABSOLUTE for columns of round-off such as the energy balance error). COPY:
+# a file copied next to the written scenes. NP ranks run the whole
 # run and the first part, RESUME_NP (default NP) the resumed part.
 #
 # STAGE splits the work in two ctest tests when NP and RESUME_NP differ
@@ -38,6 +39,10 @@ endfunction()
 if(NOT STAGE STREQUAL "resume")
 file(REMOVE_RECURSE ${WORKDIR})
 file(MAKE_DIRECTORY ${WORKDIR})
+# COPY: a file the scene names relative to itself (a Geometry/Mesh file).
+if(COPY)
+  file(COPY ${COPY} DESTINATION ${WORKDIR})
+endif()
 file(READ ${PRM} scene)
 if(APPEND)
   file(READ ${APPEND} extra)
