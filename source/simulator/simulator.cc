@@ -18,20 +18,22 @@ namespace amfrac
 {
   namespace
   {
-    /** Throws an InputError naming the face's Type if @p mesh has no
-     * boundary face of @p id: a condition there would act on nothing (a
-     * Geometry/Mesh file without a physical curve of that name). Checked
-     * once: a remeshing meshes the same file, with the same names. */
+    /** Throws an InputError naming @p parameter if @p mesh has no
+     * boundary face of @p id, the face @p name: a condition or load there
+     * would act on nothing (a Geometry/Mesh file without a physical curve
+     * or surface of that name). Checked once: a remeshing meshes the same
+     * file, with the same names. */
     template <int dim>
     void
     require_boundary_face(const Triangulation<dim> &mesh,
                           const types::boundary_id  id,
-                          const std::string        &name)
+                          const std::string        &name,
+                          const std::string        &parameter)
     {
       for (const auto &face : mesh.active_face_iterators())
         if (face->at_boundary() && face->boundary_id() == id)
           return;
-      throw InputError("Boundary conditions/" + name + "/Type",
+      throw InputError(parameter,
                        "the laminate has no face named '" + name
                          + "' (the sides of a Geometry/Mesh file are its "
                            "physical curves named x-, x+, y-, y+, or its "
@@ -235,6 +237,10 @@ namespace amfrac
     const auto    &names = parameters::BoundaryConditions::face_names;
     patch.boundary_id
       = std::find(names.begin(), names.end(), in.face) - names.begin();
+    require_boundary_face(triangulation,
+                          patch.boundary_id,
+                          in.face,
+                          "Boundary conditions/Patch load/Face");
     patch.normal_axis = in.face[0] - 'x';
     for (unsigned int d = 0; d < dim; ++d)
       patch.center[d] = in.center[d];
@@ -277,7 +283,10 @@ namespace amfrac
         const std::string path = "Boundary conditions/" + face.name + "/";
         using Type             = parameters::BoundaryFace::Type;
         if (face.type != Type::free)
-          require_boundary_face(triangulation, id, face.name);
+          require_boundary_face(triangulation,
+                                id,
+                                face.name,
+                                "Boundary conditions/" + face.name + "/Type");
         // A displacement face may carry a load on its free components as
         // well (an edge held in z and compressed in x).
         const bool supported = face.type == Type::displacement;

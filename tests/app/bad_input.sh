@@ -828,6 +828,13 @@ expect volume_shape "Element shape>: prism does not match" "$base
 $(mesh hexahedra.geo '  set Element shape = prism')"
 expect volume_shape_wedges "Element shape>: hexahedron does not match" "$base
 $(mesh wedges.geo)"
+expect volume_patch_unnamed "Patch load/Face>: the laminate has no face named 'z+'" "$base
+$(mesh hexahedra.geo)
+subsection Boundary conditions
+  subsection Patch load
+    set Face = z+
+  end
+end"
 expect volume_wedges_adaptivity "cannot be combined with adaptivity" "$base
 $(mesh wedges.geo '  set Element shape = prism')
 subsection Adaptivity
