@@ -90,15 +90,9 @@ namespace amfrac
                          "the file has no 2D elements (a .geo needs a plane "
                          "surface, a .msh its 2D mesh)");
 
-      gmsh::vectorpair groups;
-      gmsh::model::getPhysicalGroups(groups, 1);
-      for (const auto &[dim, group] : groups)
-        {
-          std::string name;
-          gmsh::model::getPhysicalName(dim, group, name);
+      GmshSession::for_each_physical_group(
+        1, [&](const std::string &name, const std::vector<int> &curves) {
           const types::boundary_id id = boundary_id_of_curve(name);
-          std::vector<int>         curves;
-          gmsh::model::getEntitiesForPhysicalGroup(dim, group, curves);
           for (const int curve : curves)
             {
               std::vector<std::size_t> line_tags, line_nodes;
@@ -116,7 +110,7 @@ namespace amfrac
                     plane.edge_ids.push_back(id);
                   }
             }
-        }
+        });
       return plane;
     }
 

@@ -122,7 +122,8 @@ namespace amfrac
       explicit VolumeMeshReader(const std::string &file)
         : file(file)
       {
-        std::vector<double> coordinates, parametric;
+        std::vector<std::size_t> node_tags;
+        std::vector<double>      coordinates, parametric;
         gmsh::model::mesh::getNodes(node_tags, coordinates, parametric);
         for (std::size_t i = 0; i < node_tags.size(); ++i)
           node_coordinates[node_tags[i]] = Point<3>(coordinates[3 * i],
@@ -172,22 +173,16 @@ namespace amfrac
         unassigned = n_plies;
         mesh.ply_of_cell.assign(mesh.cells.size(), unassigned);
         std::vector<bool> named(n_plies, false);
-        gmsh::vectorpair  groups;
-        gmsh::model::getPhysicalGroups(groups, 3);
-        for (const auto &[dim, group] : groups)
-          {
-            std::string name;
-            gmsh::model::getPhysicalName(dim, group, name);
+        GmshSession::for_each_physical_group(
+          3, [&](const std::string &name, const std::vector<int> &volumes) {
             const int ply = ply_of_name(name, n_plies);
             if (ply < 0)
-              continue;
+              return;
             named[ply] = true;
-            std::vector<int> volumes;
-            gmsh::model::getEntitiesForPhysicalGroup(dim, group, volumes);
             for (const int volume : volumes)
               for (const std::size_t tag : element_tags(3, volume))
                 set_ply(tag, ply);
-          }
+          });
         for (unsigned int p = 0; p < n_plies; ++p)
           if (!named[p])
             throw InputError(mesh_file,
@@ -213,25 +208,17 @@ namespace amfrac
       void
       collect_boundary_faces()
       {
-        gmsh::vectorpair groups;
-        gmsh::model::getPhysicalGroups(groups, 2);
-        for (const auto &[dim, group] : groups)
-          {
-            std::string name;
-            gmsh::model::getPhysicalName(dim, group, name);
-            const types::boundary_id id = boundary_id_of_surface(name);
-            std::vector<int>         surfaces;
-            gmsh::model::getEntitiesForPhysicalGroup(dim, group, surfaces);
+        GmshSession::for_each_physical_group(
+          2, [&](const std::string &name, const std::vector<int> &surfaces) {
             for (const int surface : surfaces)
-              add_faces(surface, id);
-          }
+              add_faces(surface, boundary_id_of_surface(name));
+          });
       }
 
       VolumeMesh mesh;
 
     private:
       const std::string                   file;
-      std::vector<std::size_t>            node_tags;
       std::map<std::size_t, Point<3>>     node_coordinates;
       std::map<std::size_t, unsigned int> point_of_node;
       std::map<std::size_t, unsigned int> cell_of_element;
@@ -545,6 +532,8 @@ namespace amfrac
     const std::vector<unsigned int> &interfaces,
     const std::string               &parameter)
   {
+    if (interfaces.empty())
+      return;
     for (const auto &cell : triangulation.active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
         if (!cell->at_boundary(f))

@@ -126,11 +126,10 @@ namespace amfrac
     if constexpr (dim == 3)
       if (plies_from_file)
         {
-          if (!parameters.cohesive.interfaces.empty())
-            refuse_interfaces_between_distant_plies(
-              triangulation,
-              parameters.cohesive.interfaces,
-              "Cohesive interfaces/Interfaces");
+          refuse_interfaces_between_distant_plies(
+            triangulation,
+            parameters.cohesive.interfaces,
+            "Cohesive interfaces/Interfaces");
           refuse_interfaces_between_distant_plies(
             triangulation,
             parameters.contact.unbonded_interfaces,

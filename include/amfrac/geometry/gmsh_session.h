@@ -55,6 +55,26 @@ namespace amfrac
         }
     }
 
+    /** Every physical group of dimension @p dim in the current model:
+     * @p visit(name, entities). */
+    static void
+    for_each_physical_group(
+      const int dim,
+      const std::function<void(const std::string &, const std::vector<int> &)>
+        &visit)
+    {
+      gmsh::vectorpair groups;
+      gmsh::model::getPhysicalGroups(groups, dim);
+      for (const auto &[group_dim, group] : groups)
+        {
+          std::string name;
+          gmsh::model::getPhysicalName(group_dim, group, name);
+          std::vector<int> entities;
+          gmsh::model::getEntitiesForPhysicalGroup(group_dim, group, entities);
+          visit(name, entities);
+        }
+    }
+
     /** Gmsh's name of its element type @p type, e.g. "Tetrahedron 4". */
     static std::string
     element_name(const int type)
