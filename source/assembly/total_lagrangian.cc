@@ -1,7 +1,6 @@
 #include <amfrac/assembly/displacement_gradients.h>
 #include <amfrac/assembly/total_lagrangian.h>
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
@@ -44,7 +43,7 @@ namespace amfrac
     const unsigned int     n  = fe.n_dofs_per_cell();
     FEValues<dim>          fe_values(dofs.get_mapping(),
                             fe,
-                            QGauss<dim>(fe.degree + 1),
+                            dofs.cell_quadrature(fe.degree + 1),
                             update_gradients | update_JxW_values);
     const bool             with_tangent = condensed || unconstrained;
     FullMatrix<double>     K(n, n);

@@ -108,10 +108,11 @@ namespace amfrac
         "interfaces (triangular interface faces) on the Newton path, "
         "where a load history is remeshed when Adaptivity/Error "
         "threshold or Refine every fires, and in explicit runs with "
-        "Finite element degree = 1 (not remeshed), patch loads, with "
-        "VTU output, without crack insertion, contact, an impactor, "
-        "buckling, total Lagrangian kinematics or a Refinement region so "
-        "far. With a Hole "
+        "Finite element degree = 1 (remeshed the same way), patch loads, "
+        "linear buckling, total Lagrangian kinematics and plastic plies "
+        "(remeshed with neither total Lagrangian kinematics nor an "
+        "Imperfection mode), with VTU output, without crack insertion, "
+        "contact, an impactor or a Refinement region so far. With a Hole "
         "radius the in-plane mesh is Gmsh's (unstructured triangles, see "
         "Elements around hole) and P2 wedges map the hole as a circle; a "
         "Mesh file brings its own.");
@@ -1741,6 +1742,14 @@ namespace amfrac
       refuse(remeshing && !geometry.imperfection.empty(),
              "adaptivity with a Geometry/Imperfection (remeshing sizes the "
              "columns of an extruded mesh)");
+      // A remeshing meshes the outline again: the vertices a mode moved
+      // would lose their imperfection.
+      refuse(remeshing && geometry.imperfection_mode > 0,
+             "adaptivity with a Geometry/Imperfection mode (a remeshing "
+             "would mesh the laminate without its imperfection)");
+      refuse(remeshing && total_lagrangian,
+             "adaptivity with Kinematics = total Lagrangian (not yet: the "
+             "remeshing transfer of finite-strain states is untested)");
       refuse(remeshing && geometry.mesh_file.empty()
                && geometry.hole_radius == 0 && geometry.global_refinements > 0,
              "adaptivity on the box with Global refinements > 0 (they also "
@@ -1763,10 +1772,6 @@ namespace amfrac
       refuse(cracks.active, "Crack insertion/Criterion");
       refuse(contact.active, "Contact/Enable");
       refuse(impactor.active, "an impactor (Impactor/Radius > 0)");
-      refuse(total_lagrangian, "Kinematics = total Lagrangian");
-      refuse(buckling.active() || geometry.imperfection_mode > 0,
-             "a linear buckling analysis (Buckling/Number of modes, "
-             "Geometry/Imperfection mode)");
       refuse(time.explicit_dynamics && discretization.degree != 1,
              "Time/Time integration = explicit with Discretization/Finite "
              "element degree = 2 (the lumped mass of a quadratic wedge is "
@@ -2039,7 +2044,6 @@ namespace amfrac
              "Adaptivity/Refinement cycles (cycles repeat a linear run; a "
              "plastic run adapts during its load history: Refine every, "
              "Error threshold)");
-      refuse(geometry.prisms, "Geometry/Element shape = prism");
       refuse(nonlinear_solver.dissipation_control
                && cohesive.interfaces.empty(),
              "Nonlinear solver/Control = dissipation or opening without "

@@ -299,15 +299,30 @@ namespace amfrac
                            copies);
       if (remeshes())
         {
-          // (Plastic plies are refused on prisms.)
-          const auto nodal = [&](const auto &transfer, const auto &old) {
+          // tau_1 of the plastic history between unrelated meshes: the
+          // same rules as across a refinement.
+          std::vector<std::vector<double>> old_plastic;
+          if (plasticity)
+            {
+              old_plastic  = plasticity->gather_field();
+              kappa_before = plasticity->max_kappa();
+            }
+          const auto carried = [&](const auto &transfer, const auto &old) {
             new_copies = transfer.nodal(old[0]);
+            if (plasticity)
+              plasticity->set_field(
+                transfer.quadrature(old_plastic,
+                                    plasticity->get_quadrature(),
+                                    plastic_transfer_rules(),
+                                    plasticity->get_quadrature()));
           };
-          if (!remesh_carrying({copies}, nodal))
+          if (!remesh_carrying({copies}, carried))
             {
               stop_remeshing();
               return;
             }
+          if (plasticity)
+            kappa_after = plasticity->max_kappa();
           if (interfaces)
             interfaces->setup(dof_layer,
                               parameters.boundary_conditions.constants);
@@ -439,22 +454,31 @@ namespace amfrac
 
 
   template <int dim>
+  std::vector<typename QuadratureHistoryTransfer<dim>::Rule>
+  Simulator<dim>::plastic_transfer_rules()
+  {
+    // tau_1: the plastic strain by the seed's projection, kappa (an
+    // irreversible measure) by a rule that never lowers it.
+    using Rule = typename QuadratureHistoryTransfer<dim>::Rule;
+    std::vector<Rule> rules(PlasticPlies<dim>::n_components - 1, Rule::smooth);
+    rules.push_back(Rule::non_decreasing);
+    return rules;
+  }
+
+
+
+  template <int dim>
   std::unique_ptr<QuadratureHistoryTransfer<dim>>
   Simulator<dim>::prepare_plastic_transfer() const
   {
     if (!plasticity)
       return nullptr;
-    // tau_1: the plastic strain by the seed's projection, kappa (an
-    // irreversible measure) by a rule that never lowers it; cells the
-    // change keeps keep their values exactly.
-    using Rule = typename QuadratureHistoryTransfer<dim>::Rule;
-    std::vector<Rule> rules(PlasticPlies<dim>::n_components - 1, Rule::smooth);
-    rules.push_back(Rule::non_decreasing);
+    // Cells the change keeps keep their values exactly.
     auto transfer = std::make_unique<QuadratureHistoryTransfer<dim>>(
       triangulation,
       dof_layer.get_fe().degree,
       plasticity->get_quadrature(),
-      rules,
+      plastic_transfer_rules(),
       true);
     transfer->prepare(plasticity->gather_field());
     return transfer;

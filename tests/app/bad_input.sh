@@ -671,6 +671,26 @@ subsection Adaptivity
   set Refinement cycles = 2
   set Strategy = uniform
 end"
+expect prism_adaptivity_imperfection_mode "adaptivity with a Geometry/Imperfection mode" "$base
+$prism
+subsection Geometry
+  set Imperfection mode = 1
+  set Imperfection amplitude = 0.01
+end
+subsection Adaptivity
+  set Refinement cycles = 2
+  set Strategy = uniform
+end"
+expect prism_history_finite_strain "adaptivity with Kinematics = total Lagrangian" "$base
+$prism
+set Kinematics = total Lagrangian
+subsection Cohesive interfaces
+  set Interfaces = all
+end
+subsection Adaptivity
+  set Refine every = 2
+  set Strategy = error target
+end"
 expect prism_adaptivity_kelly "Adaptivity/Estimator = kelly" "$base
 $prism
 subsection Adaptivity
@@ -1125,11 +1145,6 @@ expect plastic_cycles "Materials/Plasticity" "$base
 $plastic
 subsection Adaptivity
   set Refinement cycles = 2
-end"
-expect plastic_prisms "Materials/Plasticity" "$base
-$plastic
-subsection Geometry
-  set Element shape = prism
 end"
 expect edge_grading_prisms "Geometry/Edge grading" "$base
 subsection Geometry

@@ -11,6 +11,13 @@
 //                   every direction yields at its strength (1e-6); the
 //                   plastic work closes the energy balance (1e-6 of the
 //                   work);
+//   uniaxial D S H prism
+//                   the same on wedges (every hexahedron split into two);
+//   uniaxial D S H remeshed
+//                   on wedges remeshed after steps 4 (elastic) and 8
+//                   (plastic), every size halved: the plastic history
+//                   carried between the unrelated meshes (tau_1) keeps
+//                   the force on the curve; kappa is carried, not lowered;
 //   uniaxial D S H total-Lagrangian
 //                   the same with Kinematics = total Lagrangian: the law
 //                   acts on the Green-Lagrange strain E = (l^2 - 1) / 2 of
@@ -23,6 +30,9 @@
 //                   is elastic with the elastic stiffness and no point
 //                   yields, reloading is elastic up to the force reached
 //                   before, then follows the monotonic curve;
+//   cycle_remeshed  the same on wedges remeshed while unloading and while
+//                   reloading below the peak: both elastic branches need
+//                   the carried plastic strain;
 //   rotated         a 30 degree ply under homogeneous uniaxial strain
 //                   yields where the Hoffman index of its elastic stress in
 //                   the ply axes reaches 1 and then stays on the surface
@@ -112,7 +122,9 @@ namespace
            const unsigned int d,
            const bool         tensile,
            const double       hardening,
-           const bool         finite_strain)
+           const bool         finite_strain,
+           const bool         wedges,
+           const bool         remeshed)
   {
     const double strain = tensile ? 0.03 : -0.03;
     // 2 to 3 times the yield strain along the fibres, 2.5 to 10 times
@@ -123,9 +135,15 @@ namespace
              << "subsection Materials\n set Hardening = " << hardening
              << "\nend\nsubsection Output\n set Directory = "
              << "output-plastic-uniaxial-" << d << tensile << hardening
-             << finite_strain << "\nend\n";
+             << finite_strain << wedges << remeshed << "\nend\n";
     if (finite_strain)
       appended << "set Kinematics = total Lagrangian\n";
+    if (wedges)
+      appended << "subsection Geometry\n set Element shape = prism\nend\n";
+    // Every in-plane size halved after steps 4 and 8, in the plastic range.
+    if (remeshed)
+      appended << "subsection Adaptivity\n set Refine every = 4\n"
+                  " set Strategy = uniform\nend\n";
     const auto        run   = run_scene<3>(file, appended.str());
     const History    &h     = run->history();
     const std::string force = d == 2 ? "reaction_z+_z" : "reaction_x+_x";
@@ -158,6 +176,26 @@ namespace
               <= 1e-6 * h.value(r, "external_work"));
       }
     CHECK(plastic_steps >= 5);
+    if (remeshed)
+      {
+        // The homogeneous plastic state moves exactly (a constant per ply
+        // stays constant), which the force above checks after each
+        // remeshing; kappa is carried, not lowered. The first remeshing
+        // (step 4) is elastic, the second (step 8) plastic.
+        const History *changes = run->adaptivity_history();
+        CHECK(changes && changes->n_rows() == 2);
+        CHECK(changes
+              && changes->value(1, "max_equivalent_plastic_strain_before") > 0);
+        for (std::size_t r = 0; changes && r < changes->n_rows(); ++r)
+          {
+            const double before
+              = changes->value(r, "max_equivalent_plastic_strain_before");
+            CHECK(changes->value(r, "max_equivalent_plastic_strain_after")
+                  == before);
+            std::cout << "remeshed to " << changes->value(r, "cells")
+                      << " cells" << std::endl;
+          }
+      }
     std::cout << "direction " << d + 1
               << (tensile ? " tension" : " compression") << ", hardening "
               << hardening << ": plateau "
@@ -168,7 +206,7 @@ namespace
   }
 
   void
-  cycle(const std::string &file)
+  cycle(const std::string &file, const bool remeshed)
   {
     // 0 -> 0.01 -> 0 -> 0.015 along the 90 degree ply (Yt = 50), 35 steps.
     const double       amplitude = 0.01, hardening = 1;
@@ -177,8 +215,15 @@ namespace
              << "subsection Materials\n set Hardening = " << hardening
              << "\nend\nsubsection Time\n set End time = 3.5\n"
                 " set Number of steps = 35\nend\n"
-                "subsection Output\n set Directory = output-plastic-cycle\n"
-                "end\n";
+                "subsection Output\n set Directory = output-plastic-cycle"
+             << remeshed << "\nend\n";
+    // On wedges remeshed after steps 12 (unloading) and 24 (reloading
+    // below the peak): the elastic branch needs the carried plastic
+    // strain.
+    if (remeshed)
+      appended << "subsection Geometry\n set Element shape = prism\nend\n"
+                  "subsection Adaptivity\n set Refine every = 12\n"
+                  " set Strategy = uniform\nend\n";
     const auto     run = run_scene<3>(file, appended.str());
     const History &h   = run->history();
     const auto     at  = [&](const std::size_t r) {
@@ -212,6 +257,11 @@ namespace
     while (h.value(zero, "time") < 2 - 1e-9)
       ++zero;
     CHECK(at(zero).second < 0);
+    if (remeshed)
+      {
+        const History *changes = run->adaptivity_history();
+        CHECK(changes && changes->n_rows() == 2);
+      }
     std::cout << "cycle: peak " << peak_force << " N, at zero displacement "
               << at(zero).second << " N, final " << at(h.n_rows() - 1).second
               << " N" << std::endl;
@@ -372,14 +422,25 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const std::string                what = argc > 1 ? argv[1] : "";
-  if (what == "uniaxial" && (argc == 6 || argc == 7))
+  // Options after the hardening: total-Lagrangian, prism.
+  const auto option = [&](const std::string &name) {
+    for (int a = 6; a < argc; ++a)
+      if (argv[a] == name)
+        return true;
+    return false;
+  };
+  if (what == "uniaxial" && argc >= 6 && argc <= 8)
     uniaxial(argv[2],
              std::stoi(argv[3]) - 1,
              std::string(argv[4]) == "t",
              std::stod(argv[5]),
-             argc == 7 && std::string(argv[6]) == "total-Lagrangian");
+             option("total-Lagrangian"),
+             option("prism") || option("remeshed"),
+             option("remeshed"));
   else if (what == "cycle" && argc == 3)
-    cycle(argv[2]);
+    cycle(argv[2], false);
+  else if (what == "cycle_remeshed" && argc == 3)
+    cycle(argv[2], true);
   else if (what == "beam" && argc == 3)
     beam(argv[2]);
   else if (what == "rotated" && argc == 3)
@@ -389,7 +450,8 @@ main(int argc, char **argv)
   else
     {
       std::cerr << "usage: app_plasticity uniaxial FILE D t|c H "
-                   "[total-Lagrangian] | cycle FILE "
+                   "[total-Lagrangian] [prism] [remeshed] | cycle FILE "
+                   "| cycle_remeshed FILE "
                    "| rotated FILE | beam FILE | identity DCB SHORT"
                 << std::endl;
       return 2;

@@ -3,9 +3,9 @@
 //     degrees as a rigid body, the rest free: the whole strip turns rigidly
 //     (every probe on R X - X), no strain energy, no reaction, no output
 //     stress at the probe; in 2D and in 3D (a [0/90] plate with a cohesive
-//     interface between the plies). With small strains the same motion
-//     stores a large strain energy, which the test also checks (it is what
-//     the test could catch).
+//     interface between the plies, on hexahedra and on wedges). With small
+//     strains the same motion stores a large strain energy, which the test
+//     also checks (it is what the test could catch).
 //   rotation_sliding <euler_strip_2d.prm>: a cantilever of four plies with
 //     soft, elastic cohesive interfaces (shear stiffer than normal: a frame
 //     that mixes the modes changes their energy), its tip deflected after
@@ -24,6 +24,8 @@
 //     strain energy.
 //   euler_mode <euler_strip_2d.prm>: the same with the imperfection seeded
 //     from the computed first buckling mode (Geometry/Imperfection mode).
+//   euler_prism <euler_strip_prism.prm>: the same strip in 3D on wedges,
+//     held in plane strain, its imperfection the first mode.
 //   plastic_strip <plastic_strip_2d.prm>: the clamped [90_4] strip with
 //     Hoffman plasticity compressed far past buckling, against the same
 //     strip with elastic plies: the two runs agree bit for bit up to the
@@ -67,18 +69,21 @@ namespace
   /** A rigid rotation by t pi/2 of face x- about the width axis, x+ free. */
   template <int dim>
   std::string
-  rotation_scene(const std::string &kinematics)
+  rotation_scene(const std::string &kinematics, const bool wedges)
   {
     const std::string  z = dim == 2 ? "y" : "z";
     const std::string  a = "(t*pi/2)";
     std::ostringstream text;
     text << "set Dimension = " << dim << "\nset Kinematics = " << kinematics
          << "\nsubsection Geometry\n set Imperfection =\n"
-         << " set Length = 20\n set Elements along length = 10\n";
+         << " set Length = 20\n set Elements along length = 10\n"
+         << (wedges ? " set Element shape = prism\n" : "");
     if (dim == 3)
       text << " set Stacking sequence = [0/90]\n set Width = 4\n"
               " set Elements along width = 2\nend\n"
-              "subsection Cohesive interfaces\n set Interfaces = all\nend\n";
+              "subsection Cohesive interfaces\n set Interfaces = all\n"
+           // Quadratic triangles have no nodal rule with positive weights.
+           << (wedges ? " set Quadrature = gauss\n" : "") << "end\n";
     else
       text << "end\n";
     text << "subsection Boundary conditions\n subsection x-\n"
@@ -97,10 +102,13 @@ namespace
 
   template <int dim>
   double
-  rigid_rotation(const std::string &file, const std::string &kinematics)
+  rigid_rotation(const std::string &file,
+                 const std::string &kinematics,
+                 const bool         wedges = false)
   {
     const auto simulator
-      = amfrac_test::run_scene<dim>(file, rotation_scene<dim>(kinematics));
+      = amfrac_test::run_scene<dim>(file,
+                                    rotation_scene<dim>(kinematics, wedges));
     const History    &history = simulator->history();
     const std::size_t last    = history.n_rows() - 1;
     const double      energy  = history.value(last, "strain_energy");
@@ -205,35 +213,43 @@ namespace
   {
     rigid_rotation<2>(file, "total Lagrangian");
     rigid_rotation<3>(file, "total Lagrangian");
+    // On wedges: the interface's frame on triangles.
+    rigid_rotation<3>(file, "total Lagrangian", true);
     // Small strains see the rotation as a strain of order one.
     CHECK(rigid_rotation<2>(file, "small strain") > 1e3);
   }
 
-  /** The strip of @p file with @p imperfection appended. */
+  /** The strip of @p file (in 2D, or in 3D @p width wide and held in
+   * plane strain) with @p imperfection appended. */
+  template <int dim>
   void
-  euler(const std::string &file, const std::string &imperfection)
+  euler(const std::string &file,
+        const std::string &imperfection,
+        const double       width = 1)
   {
     // N_1 of the perfect strip on the same mesh.
-    const auto linear = amfrac_test::run_scene<2>(
+    const auto linear = amfrac_test::run_scene<dim>(
       file,
       "set Kinematics = small strain\nsubsection Geometry\n"
-      " set Imperfection =\nend\nsubsection Time\n set Number of steps = 1\n"
+      " set Imperfection =\n set Imperfection mode = 0\nend\n"
+      "subsection Time\n set Number of steps = 1\n"
       "end\nsubsection Buckling\n set Number of modes = 1\nend\n"
       "subsection Output\n set Field format = none\nend\n");
     const double N_1
-      = -linear->buckling_history()->value(0, "critical_reaction_x+_x");
+      = -linear->buckling_history()->value(0, "critical_reaction_x+_x") / width;
 
-    const auto simulator = amfrac_test::run_scene<2>(
+    const auto simulator = amfrac_test::run_scene<dim>(
       file,
       imperfection + "subsection Output\n set Field format = none\nend\n");
-    const History &history = simulator->history();
-    const double   w0      = 0.01; // the imperfection at mid-span
-    double         largest = 0;
-    unsigned int   past    = 0;
+    const History    &history    = simulator->history();
+    const std::string deflection = dim == 2 ? "p0_uy" : "p0_uz";
+    const double      w0         = 0.01; // the imperfection at mid-span
+    double            largest    = 0;
+    unsigned int      past       = 0;
     for (std::size_t r = 0; r < history.n_rows(); ++r)
       {
-        const double N = -history.value(r, "reaction_x+_x");
-        const double w = w0 + history.value(r, "p0_uy");
+        const double N = -history.value(r, "reaction_x+_x") / width;
+        const double w = w0 + history.value(r, deflection);
         largest        = std::max(largest, N);
         if (w > 10 * w0)
           {
@@ -245,13 +261,14 @@ namespace
       }
     const std::size_t last = history.n_rows() - 1;
     std::cout << "  N_1 = " << N_1 << " N/mm; largest N = " << largest
-              << ", at the end N = " << -history.value(last, "reaction_x+_x")
-              << " with w = " << w0 + history.value(last, "p0_uy") << " mm; "
+              << ", at the end N = "
+              << -history.value(last, "reaction_x+_x") / width
+              << " with w = " << w0 + history.value(last, deflection) << " mm; "
               << past << " steps past w = 10 w0" << std::endl;
     CHECK(largest < N_1);
     CHECK(largest > 0.99 * N_1);
     CHECK(past >= 10);
-    CHECK(history.value(last, "p0_uy") > 1.);
+    CHECK(history.value(last, deflection) > 1.);
   }
   /** The first @p steps displacement steps of 0.5 up to t = 21 on the
    * delaminated panel, without the buckling analyses (which leave the path
@@ -523,7 +540,10 @@ main(int argc, char *argv[])
   else if (what == "rotation_sliding")
     rotation_sliding(argv[2]);
   else if (what == "euler")
-    euler(argv[2], "");
+    euler<2>(argv[2], "");
+  else if (what == "euler_prism")
+    // The scene's strip is 2 mm wide; its imperfection is its first mode.
+    euler<3>(argv[2], "", 2);
   else if (what == "panel")
     check_panel(panel_run(argv[2], 42)->history());
   else if (what == "panel_growth")
@@ -537,14 +557,15 @@ main(int argc, char *argv[])
   else if (what == "euler_mode")
     // The first buckling mode instead of its formula, with the same
     // largest displacement.
-    euler(argv[2],
-          "subsection Geometry\n set Imperfection =\n"
-          " set Imperfection mode = 1\n"
-          " set Imperfection amplitude = 0.01\nend\n");
+    euler<2>(argv[2],
+             "subsection Geometry\n set Imperfection =\n"
+             " set Imperfection mode = 1\n"
+             " set Imperfection amplitude = 0.01\nend\n");
   else
     {
       std::cerr << "usage: app_total_lagrangian "
-                   "rotation|rotation_sliding|euler|euler_mode|panel|"
+                   "rotation|rotation_sliding|euler|euler_mode|euler_prism|"
+                   "panel|"
                    "panel_growth|panel_plastic|plastic_strip|"
                    "plastic_strip_adaptive FILE.prm"
                 << std::endl;

@@ -737,6 +737,10 @@ namespace amfrac
      * flags set on the mesh (nullptr without plastic plies). */
     std::unique_ptr<QuadratureHistoryTransfer<dim>>
     prepare_plastic_transfer() const;
+    /** The transfer rule of each component of the plastic history, for
+     * refinement and remeshing alike. */
+    static std::vector<typename QuadratureHistoryTransfer<dim>::Rule>
+    plastic_transfer_rules();
     /** Rebuild everything that depends on the mesh. */
     void
     setup_after_refinement();
