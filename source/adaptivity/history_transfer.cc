@@ -199,7 +199,7 @@ namespace amfrac
                           const unsigned int         q_from,
                           const bool                 all = false) {
       for (unsigned int c = 0; c < n_history; ++c)
-        if (all || rules[c] == Rule::non_decreasing)
+        if (all || rules[c] != Rule::smooth)
           to[q_to * n_history + c] = from[q_from * n_history + c];
     };
     for (const auto &cell : triangulation.active_cell_iterators())
@@ -262,7 +262,7 @@ namespace amfrac
                                "cells: more than one refinement step"));
         for (unsigned int q = 0; q < n_q; ++q)
           for (unsigned int c = 0; c < n_history; ++c)
-            if (rules[c] == Rule::non_decreasing)
+            if (rules[c] != Rule::smooth)
               mine[q * n_history + c] = largest[c];
       }
   }

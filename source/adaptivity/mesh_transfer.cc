@@ -243,6 +243,25 @@ namespace amfrac
 
 
 
+  namespace
+  {
+    /** The index of the point of @p points nearest to @p unit (reference
+     * coordinates). */
+    template <int dim>
+    unsigned int
+    nearest_point(const Quadrature<dim> &points, const Point<dim> &unit)
+    {
+      unsigned int nearest = 0;
+      for (unsigned int p = 1; p < points.size(); ++p)
+        if (points.point(p).distance_square(unit)
+            < points.point(nearest).distance_square(unit))
+          nearest = p;
+      return nearest;
+    }
+  } // namespace
+
+
+
   template <int dim>
   std::vector<std::vector<double>>
   NonMatchingTransfer<dim>::largest_inside_new_cells(
@@ -269,7 +288,7 @@ namespace amfrac
                                                 cell->material_id());
             auto      &into  = largest[found.cell->active_cell_index()];
             for (unsigned int c = 0; c < n_components; ++c)
-              if (rules[c] == Rule::non_decreasing)
+              if (rules[c] != Rule::smooth)
                 into[c] = std::max(into[c], field[q * n_components + c]);
           }
       }
@@ -320,12 +339,18 @@ namespace amfrac
                                  {found.cell->vertex_index(k),
                                   cell->material_id()})];
                   }
-                else
+                else if (rules[c] == Rule::non_decreasing)
                   {
                     value = largest[cell->active_cell_index()][c];
                     for (unsigned int p = 0; p < old_points.size(); ++p)
                       value = std::max(value, old_values[p * n_components + c]);
                   }
+                else
+                  value
+                    = std::max(largest[cell->active_cell_index()][c],
+                               old_values[nearest_point(old_points, found.unit)
+                                            * n_components
+                                          + c]);
               }
           }
       }

@@ -299,22 +299,24 @@ namespace amfrac
                            copies);
       if (remeshes())
         {
-          // tau_1 of the plastic history between unrelated meshes: the
-          // same rules as across a refinement.
+          // tau_1 of the plastic history between unrelated meshes (the
+          // rules of plastic_transfer_rules()).
           std::vector<std::vector<double>> old_plastic;
           if (plasticity)
             {
               old_plastic  = plasticity->gather_field();
               kappa_before = plasticity->max_kappa();
             }
+          // The nodal transfer last: the count of new points outside the
+          // old mesh that the remeshing reports is that of its nodes.
           const auto carried = [&](const auto &transfer, const auto &old) {
-            new_copies = transfer.nodal(old[0]);
             if (plasticity)
               plasticity->set_field(
                 transfer.quadrature(old_plastic,
                                     plasticity->get_quadrature(),
                                     plastic_transfer_rules(),
                                     plasticity->get_quadrature()));
+            new_copies = transfer.nodal(old[0]);
           };
           if (!remesh_carrying({copies}, carried))
             {
@@ -458,10 +460,11 @@ namespace amfrac
   Simulator<dim>::plastic_transfer_rules()
   {
     // tau_1: the plastic strain by the seed's projection, kappa (an
-    // irreversible measure) by a rule that never lowers it.
+    // irreversible measure) injected from the nearest old point, the
+    // largest where the mesh coarsens.
     using Rule = typename QuadratureHistoryTransfer<dim>::Rule;
     std::vector<Rule> rules(PlasticPlies<dim>::n_components - 1, Rule::smooth);
-    rules.push_back(Rule::non_decreasing);
+    rules.push_back(Rule::injected);
     return rules;
   }
 

@@ -12,6 +12,10 @@
 // - tau_1: a damage-like variable (random) never decreases: each new point
 //   is at least every old value of the old cell it lies in, and the largest
 //   damage survives a coarser new mesh.
+// - tau_1: a hardening variable (Rule::injected, kappa) on a finer new mesh
+//   takes the value of the old point nearest to it in its old cell, below
+//   the damage rule's largest value of that cell wherever the old cell's
+//   values differ; the largest value survives a coarser new mesh.
 // Both meshes are replicated (parallel::shared): runs on any number of
 // ranks with the same results.
 #include "../check.h"
@@ -230,6 +234,70 @@ namespace
     CHECK(lowered == 0);
     CHECK(new_max == largest);
   }
+
+  /** An old field that differs at every point of a cell: the x coordinate
+   * of the point in its reference cell plus the cell's index. */
+  Transfer::Field
+  distinct_field(const Mesh &from, const Quadrature<dim> &points)
+  {
+    Transfer::Field field(from.triangulation.n_active_cells());
+    for (const auto &cell : from.triangulation.active_cell_iterators())
+      for (unsigned int q = 0; q < points.size(); ++q)
+        field[cell->active_cell_index()].push_back(
+          points.point(q)[0] + 0.01 * cell->active_cell_index());
+    return field;
+  }
+
+  void
+  check_injected(const Mesh &from, const Mesh &to, const bool finer)
+  {
+    const auto     points = from.dofs->cell_quadrature(2);
+    const auto     field  = distinct_field(from, points);
+    const Transfer transfer(*from.dofs, *to.dofs);
+    const auto     moved
+      = transfer.quadrature(field, points, {Transfer::Rule::injected}, points);
+    const CellLocator<dim> old_cells(*from.dofs);
+    FEValues<dim>          values(to.dofs->get_mapping(),
+                         to.dofs->get_fe(),
+                         points,
+                         update_quadrature_points);
+    unsigned int           wrong = 0, below = 0;
+    double                 old_max = 0, new_max = 0;
+    for (const auto &values_of_cell : field)
+      for (const double v : values_of_cell)
+        old_max = std::max(old_max, v);
+    for (const auto &cell : to.dofs->copy_handler().active_cell_iterators())
+      {
+        values.reinit(cell);
+        for (const unsigned int q : values.quadrature_point_indices())
+          {
+            const double value   = moved[cell->active_cell_index()][q];
+            new_max              = std::max(new_max, value);
+            const auto   found   = old_cells.locate(values.quadrature_point(q),
+                                                cell->material_id());
+            const auto  &old     = field[found.cell->active_cell_index()];
+            unsigned int nearest = 0;
+            for (unsigned int p = 1; p < points.size(); ++p)
+              if (points.point(p).distance(found.unit)
+                  < points.point(nearest).distance(found.unit))
+                nearest = p;
+            // A finer new cell holds at most one old point here (the
+            // mesh is 3 times finer in the plane): the value is the
+            // nearest point's unless that point lies in it and is larger.
+            wrong += finer && value < old[nearest] ? 1 : 0;
+            below += value < *std::max_element(old.begin(), old.end()) ? 1 : 0;
+          }
+      }
+    std::cout << "injected (" << (finer ? "finer" : "coarser") << "): " << wrong
+              << " points below their nearest old point, " << below
+              << " below the largest of their old cell; largest " << new_max
+              << " (old " << old_max << ")" << std::endl;
+    CHECK(wrong == 0);
+    if (finer)
+      CHECK(below > moved.size());
+    else
+      CHECK(new_max == old_max);
+  }
 } // namespace
 
 int
@@ -249,5 +317,7 @@ main(int argc, char *argv[])
   check_constant_per_ply(coarse, fine);
   check_damage(fine, coarse);
   check_damage(coarse, fine);
+  check_injected(coarse, fine, true);
+  check_injected(fine, coarse, false);
   return amfrac_test::summary();
 }

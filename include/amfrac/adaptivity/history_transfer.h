@@ -41,10 +41,19 @@ namespace amfrac
   class QuadratureHistoryTransfer
   {
   public:
+    /** smooth: projected and interpolated. non_decreasing: injected
+     * into refined cells from the parent's nearest point, the largest of
+     * the children where cells are coarsened. injected: the same across
+     * a refinement; between unrelated meshes (NonMatchingTransfer) the
+     * nearest old point's value, or the largest old value inside the new
+     * cell if larger (a hardening variable such as kappa, which must
+     * stay with the plastic strain it measures), where non_decreasing
+     * takes the largest value of the whole old cell (damage). */
     enum class Rule
     {
       smooth,
-      non_decreasing
+      non_decreasing,
+      injected
     };
     /** values[active cell index][q * n_components + c] at the points of
      * the quadrature given to the constructor. */

@@ -77,6 +77,11 @@ namespace amfrac
    *     largest old value of the old cell it lies in and of the old points
    *     that lie in its new cell, so no point loses damage and the largest
    *     damage of the laminate survives a coarser mesh.
+   *   - injected (a hardening variable such as kappa, which has to stay
+   *     with the smoothed plastic strain it measures): the value of the
+   *     old point nearest to the new point in the old cell it lies in, or
+   *     the largest of the old points that lie in its new cell if that is
+   *     larger (a coarser mesh keeps the largest value).
    *
    * Both meshes are the replicated meshes of parallel::shared, so every
    * rank computes the same values on every cell (no communication).
