@@ -297,16 +297,15 @@ namespace amfrac
       dealii::Vector<double> copies, new_copies;
       dof_layer.expand_all(dof_layer.replicate(newton->converged_solution),
                            copies);
+      if (plasticity)
+        kappa_before = plasticity->max_kappa();
       if (remeshes())
         {
           // tau_1 of the plastic history between unrelated meshes (the
           // rules of plastic_transfer_rules()).
           std::vector<std::vector<double>> old_plastic;
           if (plasticity)
-            {
-              old_plastic  = plasticity->gather_field();
-              kappa_before = plasticity->max_kappa();
-            }
+            old_plastic = plasticity->gather_field();
           // The nodal transfer last: the count of new points outside the
           // old mesh that the remeshing reports is that of its nodes.
           const auto carried = [&](const auto &transfer, const auto &old) {
@@ -323,11 +322,6 @@ namespace amfrac
               stop_remeshing();
               return;
             }
-          if (plasticity)
-            kappa_after = plasticity->max_kappa();
-          if (interfaces)
-            interfaces->setup(dof_layer,
-                              parameters.boundary_conditions.constants);
         }
       else
         {
@@ -335,21 +329,17 @@ namespace amfrac
             dof_layer.copy_handler());
           displacement.prepare_for_coarsening_and_refinement(copies);
           const auto plastic_history = prepare_plastic_transfer();
-          if (plasticity)
-            kappa_before = plasticity->max_kappa();
           execute_mesh_change();
           setup_after_refinement();
-          if (interfaces)
-            interfaces->setup(dof_layer,
-                              parameters.boundary_conditions.constants);
           new_copies.reinit(dof_layer.n_copies());
           displacement.interpolate(copies, new_copies);
           if (plasticity)
-            {
-              plasticity->set_field(plastic_history->interpolate());
-              kappa_after = plasticity->max_kappa();
-            }
+            plasticity->set_field(plastic_history->interpolate());
         }
+      if (plasticity)
+        kappa_after = plasticity->max_kappa();
+      if (interfaces)
+        interfaces->setup(dof_layer, parameters.boundary_conditions.constants);
 
       // A new Newton state on the new mesh (with the run's totals).
       setup_newton(true);
