@@ -3,12 +3,16 @@
 (prm/plastic_beam_prism.prm) against the same beam on uniform wedge
 meshes of 11, 22, 44 and 88 squares along the half-span, never remeshed.
 
-Per run: wedges at the end, wall time (median of REPEAT runs for the
-remeshed scene, one run for the uniform meshes), the end force
-(-reaction_x+_z, per mm of width) and the plastic work, and for the
-remeshed run the plastic work of the steps right after a remeshing
-against the same steps of the finest uniform mesh: the transfer's
-smoothing of the plastic strain shows there as extra plastic flow.
+The remeshed scene runs with both ways of carrying the plastic strain
+(Adaptivity/Plastic history transfer = nearest point, the default, and
+projection, the seed's tau_1) and with a remeshing every 2, 4 (the
+scene) and 8 steps; then the whole comparison again with Kinematics =
+total Lagrangian (uniform meshes and the scene's remeshing).
+
+Per run: wedges at the end, remeshings, wall time (median of REPEAT runs
+for the scene itself, one run otherwise), the end force (-reaction_x+_z,
+per mm of width), the plastic work and the largest equivalent plastic
+strain.
 
 usage: plastic_beam_prism.py AMFRAC OUT.csv [REPEAT]
 """
@@ -45,46 +49,51 @@ def run(text, name, times):
     return walls, rows, log
 
 
-def uniform(n):
+def uniform(n, kinematics):
     text = re.sub(r"set Elements along length = \d+",
                   "set Elements along length = %d" % n, scene)
-    return re.sub(r"subsection Adaptivity.*?\nend\n", "", text,
-                  flags=re.S)
+    text = re.sub(r"subsection Adaptivity.*?\nend\n", "", text, flags=re.S)
+    return text + "\nset Kinematics = %s\n" % kinematics
 
 
-def summary(label, walls, rows, log):
+def remeshed(every, transfer, kinematics):
+    text = re.sub(r"set Refine every = \d+", "set Refine every = %d" % every,
+                  scene)
+    return text + ("\nset Kinematics = %s\nsubsection Adaptivity\n"
+                   " set Plastic history transfer = %s\nend\n" %
+                   (kinematics, transfer))
+
+
+def summary(label, kinematics, walls, rows, log):
     cells = re.findall(r"(\d+) cells", log)
     last = rows[-1]
-    return {"run": label, "wedges": cells[-1],
+    return {"kinematics": kinematics, "run": label, "wedges": cells[-1],
+            "remeshings": len(re.findall(r"adapted after step", log)),
             "wall_s": "%.2f" % statistics.median(walls),
             "force": float(last["reaction_x+_z"]) * -1,
-            "plastic_work": float(last["plastic_work"])}
+            "plastic_work": float(last["plastic_work"]),
+            "max_kappa": float(last["max_equivalent_plastic_strain"])}
 
 
-results, finest = [], None
-for n in (11, 22, 44, 88):
-    walls, rows, log = run(uniform(n), "uniform%d" % n, 1)
-    results.append(summary("uniform %d" % n, walls, rows, log))
-    finest = rows
-walls, remeshed, log = run(scene, "remeshed", repeat)
-results.append(summary("remeshed", walls, remeshed, log))
+results = []
+for kinematics in ("small strain", "total Lagrangian"):
+    for n in (11, 22, 44, 88):
+        walls, rows, log = run(uniform(n, kinematics), "uniform%d" % n, 1)
+        results.append(summary("uniform %d" % n, kinematics, walls, rows,
+                               log))
+        print(results[-1], flush=True)
+    cases = [(4, "nearest point"), (4, "projection")]
+    if kinematics == "small strain":
+        cases += [(2, "nearest point"), (2, "projection"),
+                  (8, "nearest point"), (8, "projection")]
+    for every, transfer in cases:
+        times = repeat if (every, transfer) == (4, "nearest point") else 1
+        walls, rows, log = run(remeshed(every, transfer, kinematics),
+                               "remeshed", times)
+        results.append(summary("remeshed every %d, %s" % (every, transfer),
+                               kinematics, walls, rows, log))
+        print(results[-1], flush=True)
 with open(out_csv, "w", newline="") as f:
     writer = csv.DictWriter(f, fieldnames=list(results[0]))
     writer.writeheader()
     writer.writerows(results)
-for r in results:
-    print(r)
-
-
-def increments(rows):
-    work_done = [float(r["plastic_work"]) for r in rows]
-    return [b - a for a, b in zip([0] + work_done[:-1], work_done)]
-
-
-# The steps right after a remeshing ("adapted after step k": step k + 1).
-after = [int(k) + 1 for k in re.findall(r"adapted after step (\d+)", log)]
-mine, reference = increments(remeshed), increments(finest)
-for step in after:
-    if step <= len(mine):
-        print("step %d: plastic work %.5f, uniform 88: %.5f" %
-              (step, mine[step - 1], reference[step - 1]))

@@ -38,8 +38,14 @@ namespace amfrac
     , recovery(triangulation, degree)
   {
     for (unsigned int c = 0; c < rules.size(); ++c)
-      if (rules[c] == Rule::smooth)
-        smooth.push_back(c);
+      {
+        // A refinement keeps the cells it does not touch; the rule is for
+        // meshes that share nothing.
+        AssertThrow(rules[c] != Rule::nearest,
+                    ExcMessage("Rule::nearest is for NonMatchingTransfer"));
+        if (rules[c] == Rule::smooth)
+          smooth.push_back(c);
+      }
   }
 
 

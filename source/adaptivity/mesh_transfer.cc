@@ -345,6 +345,10 @@ namespace amfrac
                     for (unsigned int p = 0; p < old_points.size(); ++p)
                       value = std::max(value, old_values[p * n_components + c]);
                   }
+                else if (rules[c] == Rule::nearest)
+                  value = old_values[nearest_point(old_points, found.unit)
+                                       * n_components
+                                     + c];
                 else
                   value
                     = std::max(largest[cell->active_cell_index()][c],

@@ -110,8 +110,8 @@ namespace amfrac
         "threshold or Refine every fires, and in explicit runs with "
         "Finite element degree = 1 (remeshed the same way); patch loads; "
         "in static runs also linear buckling, total Lagrangian kinematics "
-        "and plastic plies (remeshed with neither total Lagrangian "
-        "kinematics nor an Imperfection mode); VTU output; no crack "
+        "and plastic plies (remeshed too, but not with an Imperfection "
+        "mode); VTU output; no crack "
         "insertion, contact, impactor or Refinement region so far. With a "
         "Hole "
         "radius the in-plane mesh is Gmsh's (unstructured triangles, see "
@@ -1748,9 +1748,6 @@ namespace amfrac
       refuse(remeshing && geometry.imperfection_mode > 0,
              "adaptivity with a Geometry/Imperfection mode (a remeshing "
              "would mesh the laminate without its imperfection)");
-      refuse(remeshing && total_lagrangian,
-             "adaptivity with Kinematics = total Lagrangian (not yet: the "
-             "remeshing transfer of finite-strain states is untested)");
       refuse(remeshing && geometry.mesh_file.empty()
                && geometry.hole_radius == 0 && geometry.global_refinements > 0,
              "adaptivity on the box with Global refinements > 0 (they also "
@@ -2406,6 +2403,20 @@ namespace amfrac
                         "process-zone rule asks for l_cz / n at once, and "
                         "takes this size as fine enough where l_cz / n is "
                         "smaller).");
+      prm.declare_entry(
+        "Plastic history transfer",
+        "nearest point",
+        Patterns::Selection("nearest point|projection"),
+        "Prism meshes (global remeshing) with plastic plies: how the "
+        "plastic strain moves to the Gauss points of the new mesh. nearest "
+        "point: each new point takes the plastic strain of the nearest old "
+        "Gauss point of the old cell that holds it. projection: the seed's "
+        "tau_1, projected to the old vertices ply by ply and interpolated; "
+        "it smooths the plastic zone, which then yields again after every "
+        "remeshing (on prm/plastic_beam_prism.prm the plastic work comes "
+        "out 5.4 % above the uniform meshes' against 0.2 % with nearest "
+        "point). Either way kappa is injected from the nearest old point, "
+        "or is the largest inside the new cell if that is larger.");
       prm.leave_subsection();
     }
 
@@ -2432,6 +2443,8 @@ namespace amfrac
       process_zone_elements  = prm.get_integer("Process zone elements");
       max_cells              = prm.get_integer("Maximum cells");
       min_element_size       = prm.get_double("Minimum element size");
+      plastic_nearest_point
+        = prm.get("Plastic history transfer") == "nearest point";
       const std::string axes = prm.get("Process zone directions");
       process_zone_axes      = axes == "x" ? 1 : axes == "y" ? 2 : 3;
       prm.leave_subsection();

@@ -301,8 +301,7 @@ namespace amfrac
         kappa_before = plasticity->max_kappa();
       if (remeshes())
         {
-          // tau_1 of the plastic history between unrelated meshes (the
-          // rules of plastic_transfer_rules()).
+          // tau_1 of the plastic history between unrelated meshes.
           std::vector<std::vector<double>> old_plastic;
           if (plasticity)
             old_plastic = plasticity->gather_field();
@@ -313,7 +312,7 @@ namespace amfrac
               plasticity->set_field(
                 transfer.quadrature(old_plastic,
                                     plasticity->get_quadrature(),
-                                    plastic_transfer_rules(),
+                                    plastic_transfer_rules(true),
                                     plasticity->get_quadrature()));
             new_copies = transfer.nodal(old[0]);
           };
@@ -447,13 +446,21 @@ namespace amfrac
 
   template <int dim>
   std::vector<typename QuadratureHistoryTransfer<dim>::Rule>
-  Simulator<dim>::plastic_transfer_rules()
+  Simulator<dim>::plastic_transfer_rules(const bool remeshing) const
   {
     // tau_1: the plastic strain by the seed's projection, kappa (an
     // irreversible measure) injected from the nearest old point, the
-    // largest where the mesh coarsens.
+    // largest where the mesh coarsens. A refinement projects only where
+    // cells change; a remeshing moves every point, and the projection's
+    // smoothing of the whole plastic zone yields again in the next step
+    // (doc/benchmarks/README.md section 28), so it takes the nearest old
+    // point's plastic strain unless the seed's way is asked for.
     using Rule = typename QuadratureHistoryTransfer<dim>::Rule;
-    std::vector<Rule> rules(PlasticPlies<dim>::n_components - 1, Rule::smooth);
+    const Rule strain
+      = remeshing && parameters.adaptivity.plastic_nearest_point ?
+          Rule::nearest :
+          Rule::smooth;
+    std::vector<Rule> rules(PlasticPlies<dim>::n_components - 1, strain);
     rules.push_back(Rule::injected);
     return rules;
   }
@@ -471,7 +478,7 @@ namespace amfrac
       triangulation,
       dof_layer.get_fe().degree,
       plasticity->get_quadrature(),
-      plastic_transfer_rules(),
+      plastic_transfer_rules(false),
       true);
     transfer->prepare(plasticity->gather_field());
     return transfer;

@@ -1508,7 +1508,11 @@ namespace amfrac
         postprocess(step, t, newton->residual, row);
         if (parameters.buckling.active() && buckling_due(t))
           analyse_during_history(solver, t);
-        if (adaptive)
+        // Not after End time: a new mesh nothing is solved on (the
+        // explicit path skips its last output step likewise). A run that
+        // stops at Maximum steps adapts, as it would if it went on.
+        const bool last_step = t >= end * (1 - 1e-12);
+        if (adaptive && !last_step)
           adapt_during_history(step, t);
         if (its <= p.easy_iterations)
           {

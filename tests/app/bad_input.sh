@@ -681,16 +681,6 @@ subsection Adaptivity
   set Refinement cycles = 2
   set Strategy = uniform
 end"
-expect prism_history_finite_strain "adaptivity with Kinematics = total Lagrangian" "$base
-$prism
-set Kinematics = total Lagrangian
-subsection Cohesive interfaces
-  set Interfaces = all
-end
-subsection Adaptivity
-  set Refine every = 2
-  set Strategy = error target
-end"
 expect prism_adaptivity_kelly "Adaptivity/Estimator = kelly" "$base
 $prism
 subsection Adaptivity

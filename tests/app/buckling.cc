@@ -16,6 +16,9 @@
 //     0.3 and 0.9 of the critical t predict the same t_c (1e-3), the small
 //     strain one (2e-3) and Euler-Engesser's forces (1 %); the same two
 //     analysed during one run that goes on (Buckling/Analysis times).
+//   prebuckled_strip_remeshed <euler_strip_prism.prm>: the straight strip
+//     on wedges with cohesive interfaces, total Lagrangian, remeshed at t =
+//     0.2 and analysed at 0.3 on the new mesh: Euler-Engesser's force (1 %).
 //   prebuckled_arch <shallow_arch_2d.prm>: the limit point predicted from
 //     states at 0.5, 0.8, 0.95 of it, falling towards it.
 //   prebuckled_panel <delaminated_panel.prm>: the panel's local buckling
@@ -416,6 +419,43 @@ namespace
         CHECK_CLOSE(with.value(r, column), without.value(r, column), 1e-12);
   }
 
+  /** The strip of euler_strip_prism.prm (3D, wedges, plane strain,
+   * straight: no imperfection) with total Lagrangian kinematics and
+   * cohesive interfaces between its plies, remeshed after step 4 (t =
+   * 0.2) and analysed at t = 0.3 on the new mesh: its pre-buckled state's
+   * critical force is Euler-Engesser's (1 %), as on the first mesh. */
+  void
+  prebuckled_strip_remeshed(const std::string &file)
+  {
+    const Strip  strip{135000, 10000, 0.3, 5000, 1, 100};
+    const double width     = 2;
+    const auto   simulator = amfrac_test::run_scene<3>(
+      file,
+      "subsection Geometry\n set Imperfection mode = 0\nend\n"
+        "subsection Cohesive interfaces\n set Interfaces = all\n"
+        " set Quadrature = gauss\nend\n"
+        "subsection Adaptivity\n set Refine every = 4\n"
+        " set Strategy = error target\n set Target error = 0.05\nend\n"
+        "subsection Buckling\n set Number of modes = 1\n"
+        " set Analysis times = 0.3\nend\n"
+        "subsection Time\n set End time = 0.3\n set Number of steps = 6\nend\n"
+        "subsection Output\n set Field format = none\n"
+        " set Directory = output-prebuckled-strip-remeshed\nend\n");
+    const History *changes = simulator->adaptivity_history();
+    CHECK(changes && changes->n_rows() >= 1
+          && changes->value(0, "t") < 0.3 - 1e-12);
+    const History &modes = *simulator->buckling_history();
+    CHECK(modes.n_rows() == 1);
+    CHECK_CLOSE(modes.value(0, "time"), 0.3, 1e-12);
+    const double N_1 = -modes.value(0, "critical_reaction_x+_x") / width;
+    std::cout << "  remeshed to " << changes->value(0, "cells")
+              << " wedges at t = " << changes->value(0, "t")
+              << "; at t = 0.3: N_1 = " << N_1 << " N/mm (Engesser "
+              << strip.critical(beta_L_1) << ")" << std::endl;
+    CHECK_CLOSE(N_1 / strip.critical(beta_L_1), 1., 1e-2);
+    CHECK(modes.value(0, "residual") < 1e-8);
+  }
+
   /** The shallow arch of shallow_arch_2d.prm in the one-mode (Marguerre)
    * theory of its header: t(c) with c the mid-span rise, and the
    * prediction of linearized pre-buckling from the state at c, t + mu
@@ -655,6 +695,8 @@ main(int argc, char **argv)
     softening_state(argv[2]);
   else if (what == "prebuckled_strip")
     prebuckled_strip(argv[2]);
+  else if (what == "prebuckled_strip_remeshed")
+    prebuckled_strip_remeshed(argv[2]);
   else if (what == "prebuckled_arch")
     prebuckled_arch(argv[2]);
   else if (what == "prebuckled_panel")

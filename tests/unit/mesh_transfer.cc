@@ -251,17 +251,29 @@ namespace
   void
   check_injected(const Mesh &from, const Mesh &to, const bool finer)
   {
-    const auto     points = from.dofs->cell_quadrature(2);
-    const auto     field  = distinct_field(from, points);
+    const auto points = from.dofs->cell_quadrature(2);
+    const auto field  = distinct_field(from, points);
+    // The field twice per point: component 0 injected, 1 nearest.
+    auto twice = field;
+    for (auto &values_of_cell : twice)
+      {
+        std::vector<double> doubled;
+        for (const double v : values_of_cell)
+          doubled.insert(doubled.end(), {v, v});
+        values_of_cell = doubled;
+      }
     const Transfer transfer(*from.dofs, *to.dofs);
     const auto     moved
-      = transfer.quadrature(field, points, {Transfer::Rule::injected}, points);
+      = transfer.quadrature(twice,
+                            points,
+                            {Transfer::Rule::injected, Transfer::Rule::nearest},
+                            points);
     const CellLocator<dim> old_cells(*from.dofs);
     FEValues<dim>          values(to.dofs->get_mapping(),
                          to.dofs->get_fe(),
                          points,
                          update_quadrature_points);
-    unsigned int           wrong = 0, below = 0;
+    unsigned int           wrong = 0, below = 0, not_nearest = 0;
     double                 old_max = 0, new_max = 0;
     for (const auto &values_of_cell : field)
       for (const double v : values_of_cell)
@@ -271,7 +283,7 @@ namespace
         values.reinit(cell);
         for (const unsigned int q : values.quadrature_point_indices())
           {
-            const double value   = moved[cell->active_cell_index()][q];
+            const double value   = moved[cell->active_cell_index()][2 * q];
             new_max              = std::max(new_max, value);
             const auto   found   = old_cells.locate(values.quadrature_point(q),
                                                 cell->material_id());
@@ -285,14 +297,21 @@ namespace
             // mesh is 3 times finer in the plane): the value is the
             // nearest point's unless that point lies in it and is larger.
             wrong += finer && value < old[nearest] ? 1 : 0;
+            // Rule::nearest: that point's value, finer or coarser.
+            not_nearest
+              += moved[cell->active_cell_index()][2 * q + 1] != old[nearest] ?
+                   1 :
+                   0;
             below += value < *std::max_element(old.begin(), old.end()) ? 1 : 0;
           }
       }
     std::cout << "injected (" << (finer ? "finer" : "coarser") << "): " << wrong
               << " points below their nearest old point, " << below
               << " below the largest of their old cell; largest " << new_max
-              << " (old " << old_max << ")" << std::endl;
+              << " (old " << old_max << "); nearest: " << not_nearest
+              << " points differ from their nearest old point" << std::endl;
     CHECK(wrong == 0);
+    CHECK(not_nearest == 0);
     if (finer)
       CHECK(below > moved.size());
     else

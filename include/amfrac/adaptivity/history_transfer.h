@@ -48,12 +48,16 @@ namespace amfrac
      * nearest old point's value, or the largest old value inside the new
      * cell if larger (a hardening variable such as kappa, which must
      * stay with the plastic strain it measures), where non_decreasing
-     * takes the largest value of the whole old cell (damage). */
+     * takes the largest value of the whole old cell (damage). nearest:
+     * between unrelated meshes only, the value of the nearest old point
+     * (of the old cell that holds the new point), so that every new
+     * point gets the state of one old point. */
     enum class Rule
     {
       smooth,
       non_decreasing,
-      injected
+      injected,
+      nearest
     };
     /** values[active cell index][q * n_components + c] at the points of
      * the quadrature given to the constructor. */

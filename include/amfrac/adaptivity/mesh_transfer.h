@@ -67,7 +67,7 @@ namespace amfrac
    *   both of its sides. A field of the old space is transferred exactly
    *   where the new copies lie in it: a linear field to round-off.
    * - quadrature() is tau_1 (eqs. 15-16) for Gauss-point variables, per
-   *   component one of two rules:
+   *   component one of these rules:
    *   - smooth: the point values are projected to the vertices of the old
    *     mesh (the lumped L2 projection with the linear element, ply by
    *     ply: a ply's history never leaks into its neighbour; positive
@@ -82,6 +82,11 @@ namespace amfrac
    *     old point nearest to the new point in the old cell it lies in, or
    *     the largest of the old points that lie in its new cell if that is
    *     larger (a coarser mesh keeps the largest value).
+   *   - nearest (the plastic strain, Adaptivity/Plastic history transfer
+   *     = nearest point): the value of the old point nearest to the new
+   *     point in the old cell it lies in. Unlike smooth, it keeps the
+   *     peaks of a plastic zone, so the carried state lies on or inside
+   *     its yield surface where the old one did.
    *
    * Both meshes are the replicated meshes of parallel::shared, so every
    * rank computes the same values on every cell (no communication).

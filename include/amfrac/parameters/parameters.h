@@ -375,6 +375,10 @@ namespace amfrac
        * smallest in-plane size [mm] (0: none). */
       unsigned int max_cells;
       double       min_element_size;
+      /** Global remeshing of plastic plies: the plastic strain at a new
+       * Gauss point is that of the nearest old point (true) or the seed's
+       * projection to the old vertices (false). */
+      bool plastic_nearest_point;
 
       bool
       active() const

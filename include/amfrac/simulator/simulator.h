@@ -737,10 +737,11 @@ namespace amfrac
      * flags set on the mesh (nullptr without plastic plies). */
     std::unique_ptr<QuadratureHistoryTransfer<dim>>
     prepare_plastic_transfer() const;
-    /** The transfer rule of each component of the plastic history, for
-     * refinement and remeshing alike. */
-    static std::vector<typename QuadratureHistoryTransfer<dim>::Rule>
-    plastic_transfer_rules();
+    /** The transfer rule of each component of the plastic history across
+     * a refinement, and with @p remeshing between unrelated meshes
+     * (Adaptivity/Plastic history transfer). */
+    std::vector<typename QuadratureHistoryTransfer<dim>::Rule>
+    plastic_transfer_rules(const bool remeshing) const;
     /** Rebuild everything that depends on the mesh. */
     void
     setup_after_refinement();
