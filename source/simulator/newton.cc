@@ -1508,10 +1508,14 @@ namespace amfrac
         postprocess(step, t, newton->residual, row);
         if (parameters.buckling.active() && buckling_due(t))
           analyse_during_history(solver, t);
-        // Not after End time: a new mesh nothing is solved on (the
-        // explicit path skips its last output step likewise). A run that
-        // stops at Maximum steps adapts, as it would if it went on.
-        const bool last_step = t >= end * (1 - 1e-12);
+        // Not after the last step (End time, Maximum steps or Maximum
+        // arc-length steps): a new mesh nothing is solved on, and the
+        // buckling analysis after the loop would analyse a transferred
+        // state, not a converged one (the explicit path skips its last
+        // output step likewise).
+        const bool last_step
+          = t >= end * (1 - 1e-12) || (p.max_steps > 0 && step >= p.max_steps)
+            || (p.arc_length && step >= p.max_arc_length_steps);
         if (adaptive && !last_step)
           adapt_during_history(step, t);
         if (its <= p.easy_iterations)

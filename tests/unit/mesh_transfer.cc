@@ -253,14 +253,18 @@ namespace
   {
     const auto points = from.dofs->cell_quadrature(2);
     const auto field  = distinct_field(from, points);
-    // The field twice per point: component 0 injected, 1 nearest.
+    // Two components per point: 0 injected (the field), 1 nearest (the
+    // point's own number, q + n_q * cell: the field repeats along y and
+    // z, and a wrong pick there would go unseen).
     auto twice = field;
     for (auto &values_of_cell : twice)
       {
-        std::vector<double> doubled;
-        for (const double v : values_of_cell)
-          doubled.insert(doubled.end(), {v, v});
-        values_of_cell = doubled;
+        std::vector<double> both;
+        const double        cell = &values_of_cell - &twice[0];
+        for (unsigned int q = 0; q < values_of_cell.size(); ++q)
+          both.insert(both.end(),
+                      {values_of_cell[q], q + points.size() * cell});
+        values_of_cell = both;
       }
     const Transfer transfer(*from.dofs, *to.dofs);
     const auto     moved
@@ -297,11 +301,12 @@ namespace
             // mesh is 3 times finer in the plane): the value is the
             // nearest point's unless that point lies in it and is larger.
             wrong += finer && value < old[nearest] ? 1 : 0;
-            // Rule::nearest: that point's value, finer or coarser.
+            // Rule::nearest: that point's own number, finer or coarser.
+            const double number
+              = nearest
+                + points.size() * double(found.cell->active_cell_index());
             not_nearest
-              += moved[cell->active_cell_index()][2 * q + 1] != old[nearest] ?
-                   1 :
-                   0;
+              += moved[cell->active_cell_index()][2 * q + 1] != number ? 1 : 0;
             below += value < *std::max_element(old.begin(), old.end()) ? 1 : 0;
           }
       }

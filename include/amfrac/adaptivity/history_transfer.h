@@ -49,9 +49,9 @@ namespace amfrac
      * cell if larger (a hardening variable such as kappa, which must
      * stay with the plastic strain it measures), where non_decreasing
      * takes the largest value of the whole old cell (damage). nearest:
-     * between unrelated meshes only, the value of the nearest old point
-     * (of the old cell that holds the new point), so that every new
-     * point gets the state of one old point. */
+     * between unrelated meshes only, the value of the old point nearest
+     * (in reference coordinates) among those of the old cell that holds
+     * the new point: the value of one old point, never a mean. */
     enum class Rule
     {
       smooth,

@@ -84,9 +84,10 @@ namespace amfrac
    *     larger (a coarser mesh keeps the largest value).
    *   - nearest (the plastic strain, Adaptivity/Plastic history transfer
    *     = nearest point): the value of the old point nearest to the new
-   *     point in the old cell it lies in. Unlike smooth, it keeps the
-   *     peaks of a plastic zone, so the carried state lies on or inside
-   *     its yield surface where the old one did.
+   *     point (in reference coordinates) in the old cell it lies in.
+   *     Unlike smooth, it keeps the peaks of a plastic zone; a smoothed
+   *     peak leaves the carried stress (of the new total strain) outside
+   *     the yield surface, and the next step yields it again.
    *
    * Both meshes are the replicated meshes of parallel::shared, so every
    * rank computes the same values on every cell (no communication).
