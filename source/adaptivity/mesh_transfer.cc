@@ -327,6 +327,9 @@ namespace amfrac
                                                 cell->material_id());
             outside += found.inside ? 0 : 1;
             const auto &old_values = old_field[found.cell->active_cell_index()];
+            // The nearest old point, once per new point (every injected
+            // and nearest component takes its value).
+            const unsigned int nearest = nearest_point(old_points, found.unit);
             for (unsigned int c = 0; c < n_components; ++c)
               {
                 double &value = into[q * n_components + c];
@@ -346,15 +349,10 @@ namespace amfrac
                       value = std::max(value, old_values[p * n_components + c]);
                   }
                 else if (rules[c] == Rule::nearest)
-                  value = old_values[nearest_point(old_points, found.unit)
-                                       * n_components
-                                     + c];
+                  value = old_values[nearest * n_components + c];
                 else
-                  value
-                    = std::max(largest[cell->active_cell_index()][c],
-                               old_values[nearest_point(old_points, found.unit)
-                                            * n_components
-                                          + c]);
+                  value = std::max(largest[cell->active_cell_index()][c],
+                                   old_values[nearest * n_components + c]);
               }
           }
       }
