@@ -30,6 +30,7 @@
 #include <fstream>
 #include <sstream>
 #include <tuple>
+#include <unistd.h>
 
 using namespace amfrac;
 
@@ -140,18 +141,22 @@ end
          const std::string &degree,
          const std::string &settings)
   {
+    // Its own folder per process: ctest -j runs the tests that call this
+    // side by side in one working directory.
+    const std::string directory
+      = "adaptivity_cycles_" + std::to_string(::getpid());
     std::ifstream      in(scene_file);
     std::ostringstream text;
     text << in.rdbuf() << "\nsubsection Discretization\n  set Finite element "
          << "degree = " << degree << "\nend\nsubsection Adaptivity\n"
          << settings << "\nend\nsubsection Output\n  set Field format = "
-         << "none\n  set Directory = adaptivity_peel\nend\n";
+         << "none\n  set Directory = " << directory << "\nend\n";
     const auto   prm = parameters::Parameters::from_string(text.str());
     Simulator<2> simulator(prm, MPI_COMM_WORLD);
     simulator.run();
     (void)simulator;
     Run           run;
-    std::ifstream csv("adaptivity_peel/adaptivity.csv");
+    std::ifstream csv(directory + "/adaptivity.csv");
     std::string   line, header;
     std::getline(csv, header);
     const auto column = [&](const std::string &name) {
